@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// Energy and momentum probes, measured once per step.
+
+#include <span>
+
+#include "workbook/rigid_body.hpp"
+#include "workbook/vector3.hpp"
+
+namespace workbook {
+
+/// The conserved (or not) quantities of a set of bodies at one instant.
+///
+/// Immovable bodies have infinite mass; they stand for the environment and are left out of
+/// every sum, which is why a ball bouncing off the ground does not "conserve" momentum here.
+struct Probes {
+    double time = 0.0;                ///< s
+    double kinetic_linear = 0.0;      ///< sum of 1/2 m |v|^2, J
+    double kinetic_rotational = 0.0;  ///< sum of 1/2 w . (I w), J
+    double potential = 0.0;           ///< sum of -m g . x (zero at the origin), J
+    Vector3 linear_momentum{};        ///< sum of m v, kg m/s
+    Vector3 angular_momentum{};       ///< about the origin: sum of x cross m v + I w, kg m^2/s
+    double response_energy_change = 0.0;  ///< kinetic energy change caused by this step's responses, J
+    int contacts = 0;                 ///< contacts detected this step
+
+    [[nodiscard]] double kinetic() const { return kinetic_linear + kinetic_rotational; }
+    [[nodiscard]] double total_energy() const { return kinetic() + potential; }
+};
+
+/// Kinetic energy (linear plus rotational) of one body; 0 for an immovable body.
+double kinetic_energy(const RigidBody& body);
+
+/// Measures every probe over `bodies` under uniform `gravity` (m/s^2).
+Probes measure(std::span<const RigidBody> bodies, const Vector3& gravity);
+
+}  // namespace workbook

@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// The world: bodies, a fixed time step and the explicit stages of one step.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "workbook/contact.hpp"
+#include "workbook/probes.hpp"
+#include "workbook/response_model.hpp"
+#include "workbook/rigid_body.hpp"
+
+namespace workbook {
+
+/// Settings that do not change while a scene runs.
+struct WorldSettings {
+    double time_step = 1.0 / 240.0;  ///< s
+    Vector3 gravity{};               ///< m/s^2; the zero vector turns gravity off
+};
+
+/// Steps a set of rigid bodies with semi-implicit Euler and the scene's response model.
+///
+/// One step runs four stages in a fixed order, each callable on its own so that benchmarks
+/// can time them and scenes can skip what they do not need:
+///  1. integrate(): velocities from gravity, then positions and orientations from velocities;
+///  2. detect():    every overlapping pair, as a Contact;
+///  3. respond():   the model's velocity responder, once per contact;
+///  4. correct():   the model's position corrector, once per contact.
+///
+/// Storage is sized when the world is built; after the first step no stage allocates.
+class World {
+public:
+    World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model);
+
+    /// Runs the four stages once and advances the clock.
+    void step();
+
+    void integrate();
+    void detect();
+    void respond();
+    void correct();
+
+    [[nodiscard]] double time() const { return time_; }
+    [[nodiscard]] const WorldSettings& settings() const { return settings_; }
+    [[nodiscard]] const ResponseModel& model() const { return model_; }
+    [[nodiscard]] std::span<const RigidBody> bodies() const { return bodies_; }
+    [[nodiscard]] std::span<RigidBody> bodies() { return bodies_; }
+    [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
+
+    /// Probes of the current state, including what the last respond() did to kinetic energy.
+    [[nodiscard]] Probes probes() const;
+
+private:
+    std::vector<RigidBody> bodies_;
+    std::vector<Contact> contacts_;
+    WorldSettings settings_;
+    ResponseModel model_;
+    double time_ = 0.0;
+    double response_energy_change_ = 0.0;
+};
+
+}  // namespace workbook

@@ -1,0 +1,136 @@
+// Public step tests for chapter 1, perfectly inelastic collision.
+// Tags: [inelastic] chapter, [step:N:name] the step a test grades, [points:P] its weight.
+#include <catch2/catch_test_macros.hpp>
+
+#include "feedback.hpp"
+#include "inelastic.hpp"
+#include "workbook/probes.hpp"
+
+using namespace workbook;
+using workbook::testing::describe;
+using workbook::testing::expect_close;
+using workbook::testing::Law;
+
+namespace {
+
+const Law momentum_law{"conservation of linear momentum", "m1 v1 + m2 v2 must be the same before and after",
+                       "weight each velocity by its mass: (m1 v1 + m2 v2) / (m1 + m2); with inverse masses "
+                       "w = 1/m that is (w2 v1 + w1 v2) / (w1 + w2)"};
+const Law stick_law{"perfectly inelastic bodies stick together", "after the collision v1' = v2', in every component",
+                    "assign the common velocity to body1.velocity AND body2.velocity, the whole vector"};
+const Law immovable_law{"an immovable body (inverse mass 0) has infinite mass",
+                        "it keeps its velocity and the other body takes that velocity",
+                        "write the common velocity with inverse masses; with two immovable bodies return "
+                        "before dividing by w1 + w2 = 0"};
+const Law separating_law{"only approaching bodies collide", "when dot(v1 - v2, n) >= 0 the velocities stay as they are",
+                         "compute dot(body1.velocity - body2.velocity, contact.normal) first and return when it is >= 0"};
+const Law energy_law{"energy lost in a perfectly inelastic collision", "Delta E = 1/2 mu |v1 - v2|^2, mu = m1 m2 / (m1 + m2)",
+                     "mu = 1 / (w1 + w2) with inverse masses; square the length of the whole relative velocity"};
+
+RigidBody ball(double mass, Vector3 position, Vector3 velocity) { return make_sphere(mass, 0.5, position, velocity); }
+
+/// A contact whose normal points from body 2 to body 1, as detection reports it.
+Contact contact_between(const RigidBody& body1, const RigidBody& body2) {
+    Contact c;
+    c.normal = normalized(body1.position - body2.position);
+    c.add_point((body1.position + body2.position) / 2.0, 0.01);
+    return c;
+}
+
+std::string pair_text(const RigidBody& a, const RigidBody& b) { return "body 1: " + describe(a) + "; body 2: " + describe(b); }
+
+Vector3 momentum(const RigidBody& a, const RigidBody& b) { return a.mass() * a.velocity + b.mass() * b.velocity; }
+
+}  // namespace
+
+TEST_CASE("common velocity of a 2 kg cart at 3 m/s and a 1 kg cart at rest", "[inelastic][step:1:common-velocity][points:2]") {
+    const RigidBody cart1 = ball(2.0, {0, 0, 0}, {3, 0, 0});
+    const RigidBody cart2 = ball(1.0, {0.9, 0, 0}, {0, 0, 0});
+    expect_close(momentum_law, Vector3{2, 0, 0}, inelastic::common_velocity(cart1, cart2), 1e-12, "m/s",
+                 pair_text(cart1, cart2));
+}
+
+TEST_CASE("the common velocity carries the total momentum, in 3D", "[inelastic][step:1:common-velocity][points:2]") {
+    const RigidBody body1 = ball(0.25, {0, 0, 0}, {4, -1, 2});
+    const RigidBody body2 = ball(3.0, {0.5, 0.5, 0}, {-1, 2, 0.5});
+    const Vector3 shared = inelastic::common_velocity(body1, body2);
+    const Vector3 before = momentum(body1, body2);
+    expect_close(momentum_law, before, (body1.mass() + body2.mass()) * shared, 1e-12, "kg m/s", pair_text(body1, body2));
+}
+
+TEST_CASE("head-on carts leave together", "[inelastic][step:2:stick-together][points:2]") {
+    RigidBody cart1 = ball(2.0, {-0.45, 0, 0}, {3, 0, 0});
+    RigidBody cart2 = ball(1.0, {0.45, 0, 0}, {-3, 0, 0});
+    const std::string situation = pair_text(cart1, cart2);
+    const Contact contact = contact_between(cart1, cart2);
+    inelastic::resolve(cart1, cart2, contact);
+    expect_close(stick_law, Vector3{}, cart1.velocity - cart2.velocity, 1e-12, "m/s", situation + " (relative velocity v1' - v2' after)");
+    expect_close(momentum_law, Vector3{3, 0, 0}, cart1.mass() * cart1.velocity + cart2.mass() * cart2.velocity, 1e-12,
+                 "kg m/s", situation);
+}
+
+TEST_CASE("an oblique crash merges the whole velocity, not only its normal part", "[inelastic][step:2:stick-together][points:2]") {
+    RigidBody car1 = ball(1500.0, {0, 0, 0}, {20, 0, 0});
+    RigidBody car2 = ball(1000.0, {0.6, 0.8, 0}, {0, -15, 0});
+    const std::string situation = pair_text(car1, car2);
+    const Contact contact = contact_between(car1, car2);
+    inelastic::resolve(car1, car2, contact);
+    expect_close(stick_law, Vector3{}, car1.velocity - car2.velocity, 1e-9, "m/s", situation + " (relative velocity v1' - v2' after)");
+}
+
+TEST_CASE("a ball hitting an immovable wall stops against it", "[inelastic][step:3:immovable-bodies][points:2]") {
+    RigidBody ball1 = ball(2.0, {0, 0, 0}, {-3, 1, 0});
+    RigidBody wall = make_immovable_sphere(1.0, {-1.4, 0, 0});
+    const std::string situation = pair_text(ball1, wall);
+    const Contact contact = contact_between(ball1, wall);
+    inelastic::resolve(ball1, wall, contact);
+    expect_close(immovable_law, Vector3{}, wall.velocity, 0.0, "m/s", situation + " (the wall's velocity after)");
+    expect_close(immovable_law, Vector3{}, ball1.velocity, 0.0, "m/s", situation + " (the ball's velocity after)");
+}
+
+TEST_CASE("an immovable body on either side, and two immovable bodies", "[inelastic][step:3:immovable-bodies][points:2]") {
+    RigidBody platform = make_immovable_sphere(1.0, {0, 0, 0});
+    platform.velocity = {0, 0, 0};
+    RigidBody ball2 = ball(5.0, {0, 1.4, 0}, {0, -2, 0});
+    const std::string situation = pair_text(platform, ball2);
+    inelastic::resolve(platform, ball2, contact_between(platform, ball2));
+    expect_close(immovable_law, Vector3{}, ball2.velocity, 0.0, "m/s", situation + " (the ball, body 2, after)");
+
+    RigidBody wall1 = make_immovable_sphere(1.0, {0, 0, 0});
+    RigidBody wall2 = make_immovable_sphere(1.0, {1.5, 0, 0});
+    const Vector3 before_common = inelastic::common_velocity(wall1, wall2);
+    workbook::testing::expect_finite(immovable_law, before_common, "m/s", "two immovable bodies: common_velocity");
+}
+
+TEST_CASE("a pair already moving apart is left alone, its mirror image is not", "[inelastic][step:4:separating-pairs][points:2]") {
+    RigidBody left = ball(1.0, {-0.45, 0, 0}, {-2, 0, 0});
+    RigidBody right = ball(1.0, {0.45, 0, 0}, {1, 0, 0});
+    const std::string apart = pair_text(right, left);
+    inelastic::resolve(right, left, contact_between(right, left));
+    expect_close(separating_law, Vector3{1, 0, 0}, right.velocity, 0.0, "m/s", apart + " (body 1 after)");
+    expect_close(separating_law, Vector3{-2, 0, 0}, left.velocity, 0.0, "m/s", apart + " (body 2 after)");
+
+    left.velocity = {2, 0, 0};
+    right.velocity = {-1, 0, 0};
+    const std::string towards = pair_text(right, left);
+    inelastic::resolve(right, left, contact_between(right, left));
+    expect_close(separating_law, Vector3{0.5, 0, 0}, right.velocity, 1e-12, "m/s",
+                 towards + " (approaching: body 1 must take the common velocity)");
+}
+
+TEST_CASE("energy lost by a 2 kg cart at 3 m/s hitting a 1 kg cart at rest", "[inelastic][step:5:energy-lost][points:2]") {
+    const RigidBody cart1 = ball(2.0, {0, 0, 0}, {3, 0, 0});
+    const RigidBody cart2 = ball(1.0, {0.9, 0, 0}, {0, 0, 0});
+    expect_close(energy_law, 3.0, inelastic::energy_lost(cart1, cart2), 1e-12, "J", pair_text(cart1, cart2));
+}
+
+TEST_CASE("energy lost matches the kinetic energy that disappears", "[inelastic][step:5:energy-lost][points:2]") {
+    const RigidBody body1 = ball(0.5, {0, 0, 0}, {1, 2, -3});
+    const RigidBody body2 = ball(4.0, {0.3, 0.3, 0.3}, {-2, 0.5, 1});
+    const double mu = body1.mass() * body2.mass() / (body1.mass() + body2.mass());
+    const double expected = 0.5 * mu * length_squared(body1.velocity - body2.velocity);
+    expect_close(energy_law, expected, inelastic::energy_lost(body1, body2), 1e-12, "J", pair_text(body1, body2));
+    const RigidBody wall = make_immovable_sphere(1.0, {2, 0, 0});
+    expect_close(energy_law, kinetic_energy(body1), inelastic::energy_lost(body1, wall), 1e-12, "J",
+                 pair_text(body1, wall) + " (against a wall all kinetic energy is lost)");
+}

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// Checks that phrase a failure the way a student needs it: which law is broken, the
+/// expected and actual numbers with units, the case that broke it, and a hint.
+
+#include <string>
+#include <string_view>
+
+#include "workbook/rigid_body.hpp"
+#include "workbook/vector3.hpp"
+
+namespace workbook::testing {
+
+/// What a check is about, shown verbatim in the feedback.
+struct Law {
+    std::string_view name;       ///< e.g. "conservation of linear momentum"
+    std::string_view statement;  ///< e.g. "m1 v1 + m2 v2 is the same before and after"
+    std::string_view hint;       ///< what to look at in the code
+};
+
+/// Passes when |expected - actual| <= tolerance (tolerance absolute, in the quantity's unit).
+/// On failure, records one Catch2 failure whose message reads "Law broken: ...".
+void expect_close(const Law& law, double expected, double actual, double tolerance, std::string_view unit,
+                  std::string_view situation);
+
+/// Component-wise version of expect_close, with the tolerance applied to each component.
+void expect_close(const Law& law, const Vector3& expected, const Vector3& actual, double tolerance,
+                  std::string_view unit, std::string_view situation);
+
+/// Fails when any component of `value` is NaN or infinite.
+void expect_finite(const Law& law, const Vector3& value, std::string_view unit, std::string_view situation);
+
+/// "(1.5, 0, -2)" with enough digits to tell two nearby values apart.
+std::string format(const Vector3& v);
+std::string format(double v);
+
+/// One line describing a body for the "case" part of a message: "m = 2 kg, v = (3, 0, 0) m/s".
+std::string describe(const RigidBody& body);
+
+/// A few units in the last place of `scale`: the tolerance of a quantity that is exact up to
+/// rounding, such as a momentum sum whose terms are about `scale` in size.
+double rounding_tolerance(double scale, double ulps = 16.0);
+
+}  // namespace workbook::testing

@@ -1,0 +1,61 @@
+"""Reads Catch2's XML report (-r xml) into plain test-case records.
+
+Shared by the test of the tests (tests/meta) and the grader, so both read a report the
+same way. Step and points come from the tags [step:N:name] and [points:P]."""
+from dataclasses import dataclass, field
+import re
+import xml.etree.ElementTree as ElementTree
+
+
+@dataclass
+class CaseResult:
+    name: str
+    tags: list
+    passed: bool
+    failures: list = field(default_factory=list)
+
+    def tag_value(self, prefix):
+        return next((t[len(prefix):] for t in self.tags if t.startswith(prefix)), None)
+
+    @property
+    def step(self):
+        """(number, name) of the [step:N:name] tag, or None."""
+        value = self.tag_value("step:")
+        if value is None or ":" not in value:
+            return None
+        number, name = value.split(":", 1)
+        return (int(number), name) if number.isdigit() else None
+
+    @property
+    def points(self):
+        value = self.tag_value("points:")
+        return float(value) if value is not None else 0.0
+
+
+def parse_tags(text):
+    return re.findall(r"\[([^\]]+)\]", text or "")
+
+
+def parse(xml_text):
+    """All test cases in a report; raises ValueError when the text is not a Catch2 XML report."""
+    try:
+        root = ElementTree.fromstring(xml_text)
+    except ElementTree.ParseError as error:
+        raise ValueError(f"not a Catch2 XML report: {error}") from None
+    if root.tag != "Catch2TestRun":
+        raise ValueError(f"not a Catch2 XML report: root element <{root.tag}>")
+    cases = []
+    for case in root.iter("TestCase"):
+        failures = []
+        for node in case.iter():
+            if node.tag in ("Failure", "Exception", "FatalErrorCondition"):
+                prefix = {"Exception": "your code threw an exception: ",
+                          "FatalErrorCondition": "your code crashed: "}.get(node.tag, "")
+                failures.append(prefix + (node.text or "").strip())
+            elif node.tag == "Expression" and node.get("success") == "false":
+                expanded = node.find("Expanded")
+                failures.append("check failed: " + (expanded.text.strip() if expanded is not None and expanded.text else ""))
+        result = case.find("OverallResult")
+        passed = result is not None and result.get("success") == "true" and not failures
+        cases.append(CaseResult(case.get("name", ""), parse_tags(case.get("tags")), passed, failures))
+    return cases
