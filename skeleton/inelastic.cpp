@@ -21,7 +21,8 @@ Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
 //! [resolve]
 void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
     // STEP 2: give both bodies the common velocity (every component, not only the normal one).
-    // STEP 3: an immovable body (inverse_mass == 0) keeps its velocity; with two, change nothing.
+    // STEP 3: an immovable body (inverse_mass == 0) keeps its velocity exactly and the other body
+    //         takes that velocity; with two immovable bodies, change nothing.
     // STEP 4: leave the pair alone when it is already separating: dot(v1 - v2, contact.normal) >= 0.
     (void)body1;
     (void)body2;
