@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""The student edition: built into a temporary folder, built there from scratch, checked
+there, and proved free of solution and hidden-test text by its file list and its content."""
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "grader"))
+import pack_student  # noqa: E402
+
+SECRET_FOLDERS = ["solutions", "tests/hidden", "tests/mutants", "tests/hostile", "grader"]
+PUBLIC_FOLDERS = ["skeleton", "tests/steps", "tests/engine", "tests/support", "engine", "chapters", "tools"]
+
+
+def text_files(folder):
+    return [p for p in folder.rglob("*") if p.is_file() and p.suffix in {".cpp", ".hpp", ".py", ".md", ".json", ".txt", ".sh", ""}]
+
+
+def significant_lines(path):
+    """Lines long enough to identify their file (short lines like '}' are everywhere)."""
+    try:
+        lines = path.read_text(errors="replace").splitlines()
+    except OSError:
+        return set()
+    return {" ".join(line.split()) for line in lines if len(line.strip()) >= 24}
+
+
+class StudentPackTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scratch = tempfile.TemporaryDirectory(prefix="student-pack-")
+        cls.pack = pathlib.Path(cls.scratch.name) / "workbook-student"
+        pack_student.write_pack(cls.pack)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.scratch.cleanup()
+
+    def pack_files(self):
+        return [p.relative_to(self.pack).as_posix() for p in self.pack.rglob("*") if p.is_file()]
+
+    def test_no_secret_file_is_in_the_pack(self):
+        for relative in self.pack_files():
+            for secret in SECRET_FOLDERS + ["tests/pack", "tests/grader", ".ci"]:
+                self.assertFalse(relative == secret or relative.startswith(secret + "/"), relative)
+
+    def test_no_line_of_a_secret_file_is_in_the_pack(self):
+        public = set()
+        for folder in PUBLIC_FOLDERS:
+            for path in text_files(ROOT / folder):
+                public |= significant_lines(path)
+        secret = set()
+        for folder in SECRET_FOLDERS:
+            if (ROOT / folder).exists():
+                for path in text_files(ROOT / folder):
+                    if path.name != "student-README.md":  # written for the pack
+                        secret |= significant_lines(path)
+        secret -= public  # lines the student already has (includes, signatures) give nothing away
+        self.assertGreater(len(secret), 50, "too few secret lines found: is the test reading the right folders?")
+        for path in text_files(self.pack):
+            leaked = significant_lines(path) & secret
+            self.assertFalse(leaked, f"{path.relative_to(self.pack)} holds secret lines: {sorted(leaked)[:3]}")
+
+    def test_the_pack_builds_from_scratch_and_check_fails_every_step_of_the_skeleton(self):
+        for chapter in pack_student_chapters(self.pack):
+            run = subprocess.run(["./workbook", "check", chapter], cwd=self.pack, capture_output=True, text=True, timeout=1200)
+            self.assertNotEqual(run.returncode, 0, "an untouched skeleton must not pass check")
+            output = run.stdout
+            self.assertIn("0 of", output, output[-2000:])
+            self.assertNotIn("PASS  Step", output, output[-2000:])
+            self.assertIn("FAIL  Step 1", output, (run.stdout + run.stderr)[-3000:])
+            self.assertIn("Law broken:", output)
+        solutions = subprocess.run(["./workbook", "check", "inelastic", "--solutions"], cwd=self.pack,
+                                   capture_output=True, text=True, timeout=120)
+        self.assertNotEqual(solutions.returncode, 0)
+        self.assertIn("no solutions", solutions.stderr)
+
+
+def pack_student_chapters(pack):
+    lines = (pack / "chapters" / "CHAPTERS").read_text().splitlines()
+    return [line.split("#")[0].strip() for line in lines if line.split("#")[0].strip()]
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
