@@ -1,0 +1,237 @@
+"""Runs one untrusted command with a wall-clock limit, resource limits and, where the
+kernel allows it, inside a bubblewrap sandbox.
+
+Everything the grader knows about isolation lives here, so the rest of the grader only asks
+"run this, with these folders readable and this one writable" and reads a RunResult.
+
+Isolation, strongest first:
+  bwrap   Debian's bubblewrap in new user, pid, network, IPC and UTS namespaces: no network,
+          only /usr (and the /lib links) plus the folders the caller names are visible, a
+          private /tmp. When the grader runs as root the command runs as the unprivileged
+          user nobody (65534) *outside* the namespace too, because RLIMIT_NPROC never binds
+          a root-owned process: that is what stops a fork loop.
+  rlimits no namespaces (bwrap missing or user namespaces disabled, as in many Docker
+          containers): the same resource limits and a scratch working folder, as nobody when
+          the grader is root. The code can read any world-readable file, so the grader prints
+          a warning.
+"""
+from dataclasses import dataclass, field
+import os
+import selectors
+import shutil
+import signal
+import subprocess
+import time
+
+NOBODY = 65534
+SAFE_PATH = "/usr/local/bin:/usr/bin:/bin"
+
+
+@dataclass
+class Limits:
+    wall_seconds: float = 10.0
+    memory_bytes: int = 1 << 30          # address space; ignored for sanitizer builds
+    file_bytes: int = 16 << 20           # largest file the command may write (the report)
+    processes: int = 64                  # per sandbox (bwrap) or per user (rlimits)
+    output_bytes: int = 1 << 20          # more output than this is a flood: the run is stopped
+    keep_output_bytes: int = 64 << 10    # how much of stdout+stderr is kept for feedback
+    address_space_limit: bool = True
+
+
+@dataclass
+class RunResult:
+    returncode: int | None = None        # exit status, or None when killed by a signal
+    signal: int | None = None
+    timed_out: bool = False
+    flooded: bool = False
+    output: bytes = b""
+    output_total: int = 0
+    seconds: float = 0.0
+    error: str | None = None              # the command could not be started at all
+
+    @property
+    def ok(self):
+        return self.error is None and not self.timed_out and not self.flooded and self.returncode == 0
+
+
+@dataclass
+class Sandbox:
+    mode: str                      # "bwrap" or "rlimits"
+    run_as: int | None             # uid to drop to, or None to stay
+    warning: str | None = None
+    bwrap: str | None = None
+    _system_binds: list = field(default_factory=list)
+
+    @property
+    def description(self):
+        who = f"uid {self.run_as}" if self.run_as is not None else f"uid {os.getuid()}"
+        if self.mode == "bwrap":
+            return f"bubblewrap sandbox (no network, private filesystem view), running as {who}"
+        return f"separate process with resource limits only, running as {who}"
+
+    def prepare_writable(self, path):
+        """Makes `path` writable by the sandboxed user (the grader may be root, the command not)."""
+        if self.run_as is not None:
+            os.chown(path, self.run_as, self.run_as)
+        os.chmod(path, 0o755)
+
+    def run(self, argv, *, readable=(), writable=None, cwd=None, limits=None, stdin_data=None):
+        """Runs argv; `readable` folders are visible read-only at their own paths, `writable`
+        (one folder) read-write; cwd defaults to `writable`."""
+        limits = limits or Limits()
+        cwd = cwd or writable or "/"
+        command = self._wrap(list(argv), readable, writable, cwd)
+        command = _prlimit_prefix(limits) + command
+        return _supervise(command, cwd if self.mode != "bwrap" else "/", limits, self.run_as)
+
+    def _wrap(self, argv, readable, writable, cwd):
+        if self.mode != "bwrap":
+            return argv
+        args = [self.bwrap, "--unshare-all", "--die-with-parent", "--new-session", "--clearenv",
+                "--setenv", "PATH", SAFE_PATH, "--setenv", "LANG", "C.UTF-8", "--setenv", "HOME", "/tmp"]
+        args += self._system_binds
+        args += ["--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"]
+        for path in readable:
+            args += ["--ro-bind", str(path), str(path)]
+        if writable:
+            args += ["--bind", str(writable), str(writable)]
+        args += ["--chdir", str(cwd), "--"]
+        return args + argv
+
+
+def _system_binds():
+    """/usr read-only, and /bin, /lib... as the links (merged /usr) or folders they are."""
+    binds = ["--ro-bind", "/usr", "/usr"]
+    for name in ("bin", "sbin", "lib", "lib32", "lib64", "libx32"):
+        path = "/" + name
+        if os.path.islink(path):
+            binds += ["--symlink", os.readlink(path), path]
+        elif os.path.isdir(path):
+            binds += ["--ro-bind", path, path]
+    # The dynamic loader's cache and the C++ runtime's locale settings; nothing secret.
+    for path in ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives"):
+        if os.path.exists(path):
+            binds += ["--ro-bind", path, path]
+    return binds
+
+
+def _prlimit_prefix(limits):
+    """Resource limits through util-linux prlimit, applied between fork and exec of the
+    command, so the grader needs no preexec_fn (unsafe in a threaded program)."""
+    cpu = max(1, int(limits.wall_seconds) + 1)
+    args = [PRLIMIT, f"--cpu={cpu}", f"--fsize={limits.file_bytes}", f"--nproc={limits.processes}",
+            "--core=0"]
+    if limits.address_space_limit:
+        args.append(f"--as={limits.memory_bytes}")
+    return args + ["--"]
+
+
+PRLIMIT = shutil.which("prlimit") or "/usr/bin/prlimit"
+
+
+def _supervise(command, cwd, limits, run_as):
+    """Starts the command in its own session, keeps at most keep_output_bytes of its output,
+    and kills the whole process group on timeout or flood. Never blocks past the deadline."""
+    result = RunResult()
+    start = time.monotonic()
+    env = {"PATH": SAFE_PATH, "LANG": "C.UTF-8", "HOME": "/tmp"}
+    try:
+        process = subprocess.Popen(command, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, start_new_session=True, close_fds=True,
+                                   user=run_as, group=run_as, extra_groups=[] if run_as is not None else None)
+    except OSError as error:
+        result.error = f"could not start {command[0]}: {error}"
+        return result
+    kept = bytearray()
+    deadline = start + limits.wall_seconds
+    selector = selectors.DefaultSelector()
+    selector.register(process.stdout, selectors.EVENT_READ)
+    descriptor = process.stdout.fileno()
+    try:
+        open_pipe = True
+        while open_pipe:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                result.timed_out = process.poll() is None
+                break
+            for _ in selector.select(timeout=min(remaining, 0.5)):
+                chunk = os.read(descriptor, 65536)
+                if not chunk:
+                    open_pipe = False
+                    break
+                result.output_total += len(chunk)
+                if len(kept) < limits.keep_output_bytes:
+                    kept += chunk[: limits.keep_output_bytes - len(kept)]
+                if result.output_total > limits.output_bytes:
+                    result.flooded = True
+                    open_pipe = False
+                    break
+        if result.timed_out or result.flooded:
+            _kill_group(process)
+        # The pipe is closed (or we gave up on it); the process itself must end soon.
+        try:
+            process.wait(timeout=max(0.1, deadline - time.monotonic()) if not result.timed_out else 2)
+        except subprocess.TimeoutExpired:
+            result.timed_out = True
+            _kill_group(process)
+            process.wait(timeout=5)
+    finally:
+        selector.close()
+        process.stdout.close()
+        if process.poll() is None:
+            _kill_group(process)
+        # Children left in the group (rlimits mode, or a command that closed its output)
+        # must not outlive the run.
+        _kill_group(process, quiet=True)
+    result.seconds = time.monotonic() - start
+    result.output = bytes(kept)
+    code = process.returncode
+    if code is not None and code < 0:
+        result.signal = -code
+    else:
+        result.returncode = code
+    # bwrap reports a signal that killed the command as exit status 128 + signal.
+    if result.returncode is not None and result.returncode > 128 and result.returncode - 128 < 65:
+        result.signal = result.returncode - 128
+        result.returncode = None
+    return result
+
+
+def _kill_group(process, quiet=False):
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+    if not quiet:
+        try:
+            process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            pass
+
+
+def _probe(sandbox):
+    result = sandbox.run(["/bin/sh", "-c", "echo ok"], limits=Limits(wall_seconds=10))
+    return result.ok and result.output.strip() == b"ok"
+
+
+def detect(allow_bwrap=True):
+    """The strongest isolation that works on this machine, checked by running a command."""
+    run_as = NOBODY if os.getuid() == 0 else None
+    bwrap = shutil.which("bwrap")
+    if allow_bwrap and bwrap:
+        candidates = [run_as] + ([None] if run_as is not None else [])
+        for uid in candidates:
+            sandbox = Sandbox("bwrap", uid, bwrap=bwrap, _system_binds=_system_binds())
+            if _probe(sandbox):
+                if uid is None and os.getuid() == 0:
+                    sandbox.warning = ("bubblewrap works only as root here, so the process limit does not bind: "
+                                       "a fork loop is stopped by the time limit only.")
+                return sandbox
+    sandbox = Sandbox("rlimits", run_as)
+    reason = "bubblewrap is not installed" if not bwrap else "bubblewrap cannot create namespaces here"
+    if not allow_bwrap:
+        reason = "bubblewrap was switched off (--no-bwrap)"
+    sandbox.warning = (f"WARNING: weaker isolation: {reason}. Student code runs as a separate process with "
+                       "resource limits only; it can read world-readable files (including solutions/ and tests/) "
+                       "and reach the network.")
+    return sandbox

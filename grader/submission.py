@@ -1,0 +1,90 @@
+"""Finds a student's chapter files in a submission: a folder, a .zip or a .tar.gz.
+
+Only the chapter file names (chapters/CHAPTERS ids, '-' as '_', plus .cpp) are ever taken;
+every other file is ignored. Archives are read member by member and never extracted, so a
+path like ../../x or a symlink in an archive cannot write or read outside the grader's folder."""
+import os
+import pathlib
+import tarfile
+import zipfile
+
+MAX_SOURCE_BYTES = 1 << 20   # a chapter file larger than this is not a hand-written solution
+SUFFIXES = (".tar.gz", ".tgz", ".zip", ".tar")
+
+
+class SubmissionError(Exception):
+    """The submission cannot be read at all (not a folder, corrupt archive...)."""
+
+
+def display_name(path):
+    name = pathlib.Path(path).name
+    for suffix in SUFFIXES:
+        if name.lower().endswith(suffix):
+            return name[: -len(suffix)] or name
+    return name
+
+
+def chapter_files(path, wanted):
+    """{file name: (bytes, where found)} for the names in `wanted` that the submission holds.
+
+    A file at the top wins; otherwise the shallowest copy anywhere (students often hand in
+    their whole skeleton/ folder). Returns notes about ambiguous or oversized files too."""
+    path = pathlib.Path(path)
+    if path.is_dir():
+        members = _folder_members(path)
+    elif path.is_file():
+        members = _archive_members(path)
+    else:
+        raise SubmissionError(f"{path} does not exist")
+    found, notes = {}, []
+    for name in wanted:
+        candidates = sorted((m for m in members if m[0].rsplit("/", 1)[-1] == name and "__MACOSX" not in m[0]),
+                            key=lambda m: (m[0].count("/"), m[0]))
+        if not candidates:
+            continue
+        where, size, read = candidates[0]
+        if len(candidates) > 1 and candidates[1][0].count("/") == where.count("/"):
+            notes.append(f"several copies of {name}; graded {where}")
+        if size > MAX_SOURCE_BYTES:
+            notes.append(f"{where} is larger than {MAX_SOURCE_BYTES // 1024} KiB; graded as the untouched skeleton")
+            continue
+        try:
+            found[name] = (read(), where)
+        except Exception as error:
+            raise SubmissionError(f"cannot read {where}: {error}") from None
+    return found, notes
+
+
+def _folder_members(root):
+    members = []
+    for folder, dirs, files in os.walk(root, followlinks=False):
+        dirs[:] = [d for d in dirs if not os.path.islink(os.path.join(folder, d))]
+        for file in files:
+            full = os.path.join(folder, file)
+            if os.path.islink(full) or not os.path.isfile(full):
+                continue  # a link could point at the instructor's files
+            rel = os.path.relpath(full, root).replace(os.sep, "/")
+            members.append((rel, os.path.getsize(full), lambda full=full: _read_capped(full)))
+    return members
+
+
+def _read_capped(path):
+    with open(path, "rb") as file:
+        return file.read(MAX_SOURCE_BYTES + 1)
+
+
+def _archive_members(path):
+    lower = path.name.lower()
+    try:
+        if zipfile.is_zipfile(path):
+            archive = zipfile.ZipFile(path)
+            return [(info.filename.strip("/"), info.file_size, lambda info=info: archive.read(info))
+                    for info in archive.infolist() if not info.is_dir()]
+        if lower.endswith((".tar.gz", ".tgz", ".tar")) or tarfile.is_tarfile(path):
+            archive = tarfile.open(path)
+            return [(info.name.strip("/").removeprefix("./"), info.size,
+                     lambda info=info: archive.extractfile(info).read(MAX_SOURCE_BYTES + 1))
+                    for info in archive.getmembers() if info.isfile()]
+    except (OSError, zipfile.BadZipFile, tarfile.TarError, EOFError) as error:
+        raise SubmissionError(f"cannot open the archive {path.name}: {error}") from None
+    raise SubmissionError(f"{path.name} is neither a folder nor a .zip or .tar.gz archive")
