@@ -1,0 +1,260 @@
+#!/usr/bin/env python3
+"""Energy and momentum figures for the scenes of one workbook chapter.
+
+For every chapters/<chapter>/scenes/*.json this runs the simulator into a CSV and draws one
+figure with two panels, energy over time and momentum over time, as SVG, PDF and PNG beside
+the CSV. The kinetic energy the impact removes is marked with its measured value (the CSV's
+response_energy_change column). With --student the student's simulator is run as well and
+its curves are drawn dashed over the reference's; without a reference simulator (the student
+pack) the student's curves are drawn alone. All looks come from plots/style.gp.
+
+    figures.py inelastic build/dev/book/figures/inelastic --sim build/dev/tools/workbook-sim
+    figures.py inelastic OUT --student --student-sim build/dev/tools/workbook-sim-student
+"""
+
+import argparse
+import csv
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+PLOTS = Path(__file__).resolve().parent
+SOURCE = PLOTS.parent
+STYLE = PLOTS / "style.gp"
+
+# (CSV column, key title, line style in style.gp, always drawn?)
+ENERGY = [("total", "total", 1, True), ("kinetic_linear", "kinetic, linear", 2, True),
+          ("kinetic_rotational", "kinetic, rotational", 3, False), ("potential", "potential", 4, False)]
+MOMENTUM = [("momentum_x", "p_x", 11), ("momentum_y", "p_y", 12), ("momentum_z", "p_z", 13)]
+ANGULAR = [("angular_momentum_x", "L_x", 21), ("angular_momentum_y", "L_y", 22), ("angular_momentum_z", "L_z", 23)]
+
+# What the measured energy change at impact should equal, per responder; the figure states it
+# next to the measured value. A responder missing here gets the measured value alone.
+LOSS_LAW = {"inelastic": "−½ μ |v₁ − v₂|²"}
+
+FORMATS = ["svg", "pdf", "png"]
+
+
+def read_csv(path):
+    """The CSV as {column: [float, ...]}."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return {name: [float(row[i]) for row in rows[1:]] for i, name in enumerate(rows[0])}
+
+
+def run_scene(simulator, scene, csv_path):
+    result = subprocess.run([str(simulator), "run", str(scene), "--csv", str(csv_path), "--quiet"],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        raise RuntimeError(f"{simulator} failed on {scene}:\n{result.stderr.strip()}")
+    return read_csv(csv_path)
+
+
+def largest(datasets, columns):
+    return max((abs(v) for d in datasets for c in columns for v in d[c] if math.isfinite(v)), default=0.0)
+
+
+def significant(datasets, column, scale):
+    """True when the column rises above rounding noise: above 1e-9 of `scale`, the largest
+    related quantity (a curve of 1e-13 J next to 800 J is noise, not physics)."""
+    return largest(datasets, [column]) > 1e-9 * scale
+
+
+def impact(data):
+    """Index of the first sample whose step changed kinetic energy in a response, else of the
+    first step with a contact, else None."""
+    for column in ("response_energy_change", "contacts"):
+        for i, v in enumerate(data[column]):
+            if v != 0.0:
+                return i
+    return None
+
+
+def unit_scale(values, units):
+    """(factor, unit) keeping tick labels below 10^4: units[k] is the unit for factor 1000^-k."""
+    biggest = max((abs(v) for v in values if math.isfinite(v)), default=0.0)
+    k = 0
+    while k + 1 < len(units) and biggest >= 1e4 * 1000.0 ** k:
+        k += 1
+    return 1000.0 ** -k, units[k]
+
+
+def axis_range(values, top_room=0.14):
+    """A range that includes zero, with room above the data for the annotations."""
+    finite = [v for v in values if math.isfinite(v)]
+    lo, hi = min(finite + [0.0]), max(finite + [0.0])
+    span = hi - lo or 1.0
+    return lo - (0.06 * span if lo < 0 else 0.0), hi + top_room * span
+
+
+def tick_step(span, ticks=5):
+    """A round tick spacing (1, 2, 2.5 or 5 times a power of ten) giving about `ticks` intervals."""
+    raw = span / ticks
+    power = 10.0 ** math.floor(math.log10(raw))
+    return next(m * power for m in (1, 2, 2.5, 5, 10) if m * power >= raw * 0.999)
+
+
+def quote(text):
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def number(value, unit):
+    return f"{value:.3f}".replace("-", "\u2212") + " " + unit
+
+
+def curves(datasets, series, factor, axes=""):
+    """Plot clauses: every series for every (csv path, data, dashed, titled) dataset."""
+    clauses = []
+    for path, data, dashed, titled in datasets:
+        header = list(data)
+        for column, title, style in series:
+            clause = f"'{path}' skip 1 using 1:(${header.index(column) + 1}*{factor!r}) {axes}with lines ls {style}"
+            clause += " dt student_dash" if dashed else ""
+            clause += f" title {quote(title)}" if titled else " notitle"
+            clauses.append(clause)
+    return clauses
+
+
+def gnuplot_panels(title, responder, datasets, reference, student):
+    """The multiplot body (everything after `set output`) for one scene."""
+    main = (reference or student)[1]
+    everything = [d for _, d, _, _ in datasets]
+    t_end = main["t"][-1]
+    hit = impact(main)
+
+    e_scale = largest(everything, [c for c, _, _, _ in ENERGY])
+    p_scale = largest(everything, [c for c, _, _ in MOMENTUM])
+    energy = [(c, t, s) for c, t, s, always in ENERGY if always or significant(everything, c, e_scale)]
+    momentum = [(c, t, s) for c, t, s in MOMENTUM if significant(everything, c, p_scale)] or [MOMENTUM[0]]
+    # Angular momentum is compared with |p| times one metre (or with zero when nothing moves).
+    angular = [(c, t, s) for c, t, s in ANGULAR if significant(everything, c, p_scale * 1.0)]
+
+    e_factor, e_unit = unit_scale([v for d in everything for c, _, _ in energy for v in d[c]], ["J", "kJ", "MJ"])
+    p_factor, p_unit = unit_scale([v for d in everything for c, _, _ in momentum for v in d[c]],
+                                  ["kg m/s", "10^3 kg m/s", "10^6 kg m/s"])
+    e_lo, e_hi = axis_range([e_factor * v for d in everything for c, _, _ in energy for v in d[c]], top_room=0.55)
+    p_lo, p_hi = axis_range([p_factor * v for d in everything for c, _, _ in momentum for v in d[c]])
+
+    g = [f"set multiplot layout 1,2 title {quote(title)} font title_font noenhanced",
+         f"set xrange [0:{t_end!r}]", f"set xtics 0, {tick_step(t_end)!r}", "set format x '%g'",
+         "set xlabel 't / s'"]
+    if hit is not None:
+        t_hit = main["t"][hit]
+        g += [f"set arrow 1 from {t_hit!r}, graph 0 to {t_hit!r}, graph 1 @impact_style",
+              f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note"]
+
+    # Energy panel, with the drop at impact marked and labelled by its measured value.
+    g += ["set title 'Energy'", f"set ylabel 'E / {e_unit}'", f"set yrange [{e_lo!r}:{e_hi!r}]"]
+    if hit is not None:
+        base = (reference or student)[1]
+        drop = base["response_energy_change"][hit]
+        before = base["total"][hit - 1] * e_factor
+        after = before + drop * e_factor
+        t_arrow = t_hit + 0.012 * t_end  # just right of the step, so that the curve does not hide it
+        if drop != 0.0:
+            g.append(f"set arrow 2 from {t_arrow!r}, {before!r} to {t_arrow!r}, {after!r} @drop_style")
+        if reference:
+            law = LOSS_LAW.get(responder)
+            lines = [f"ΔE = {number(drop * e_factor, e_unit)}"] + ([f"    = {law}"] if law else [])
+        else:
+            lines = [f"your code: ΔE = {number(drop * e_factor, e_unit)}"]
+        if reference and student:
+            s_hit = impact(student[1])
+            s_drop = student[1]["response_energy_change"][s_hit] if s_hit is not None else 0.0
+            lines.append(f"your code: ΔE = {number(s_drop * e_factor, e_unit)}")
+        # In the free strip above the curves, beside the impact line on the side with more room.
+        right = t_hit < 0.6 * t_end
+        for n, text in enumerate(lines):
+            g.append(f"set label {10 + n} {quote(text)} at first {t_arrow if right else t_hit!r}, graph {0.87 - 0.07 * n!r} "
+                     f"{'left offset character 0.8' if right else 'right offset character -0.8'}, 0 "
+                     "font label_font tc rgb c_drop noenhanced")
+    plot = curves(datasets, energy, e_factor)
+    if reference and student:
+        plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
+    g += ["plot " + ", \\\n     ".join(plot), "unset arrow 2", "unset label"]
+    if hit is not None:
+        g.append(f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note")
+
+    # Momentum panel: linear momentum on the left axis, angular momentum (if any) on the right.
+    g += ["set title 'Momentum'", f"set ylabel 'p / ({p_unit})'", f"set yrange [{p_lo!r}:{p_hi!r}]"]
+    plot = curves(datasets, momentum, p_factor)
+    if angular:
+        l_factor, l_unit = unit_scale([v for d in everything for c, _, _ in angular for v in d[c]],
+                                      ["kg m^2/s", "10^3 kg m^2/s", "10^6 kg m^2/s"])
+        l_lo, l_hi = axis_range([l_factor * v for d in everything for c, _, _ in angular for v in d[c]])
+        g += [f"set y2label 'L / ({l_unit}), right axis'", f"set y2range [{l_lo!r}:{l_hi!r}]", "set y2tics",
+              "set my2tics 2", "set border 11"]
+        plot += curves(datasets, [(c, t + " (right)", s) for c, t, s in angular], l_factor, "axes x1y2 ")
+    if reference and student:
+        plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
+    g += ["plot " + ", \\\n     ".join(plot), "unset multiplot"]
+    return "\n".join(g)
+
+
+def draw(scene, out_dir, stem, reference, student):
+    """Writes stem.svg, stem.pdf and stem.png for one scene."""
+    description = json.loads(scene.read_text())
+    title, responder = description["title"], description["responder"]
+    if student and not reference:
+        title += " (your code)"
+    datasets = ([(reference[0], reference[1], False, True)] if reference else []) + \
+               ([(student[0], student[1], bool(reference), not reference)] if student else [])
+    body = gnuplot_panels(title, responder, datasets, reference, student)
+    script = []
+    for ext in FORMATS:
+        script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
+                   f"set output {quote(str(out_dir / (stem + '.' + ext)))}", body, "unset output"]
+    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+    if result.returncode != 0 or result.stderr.strip():
+        raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("chapter", help="chapter id, as in chapters/CHAPTERS")
+    parser.add_argument("out", type=Path, help="folder for the figures and CSV files")
+    parser.add_argument("--scene", type=Path, action="append",
+                        help="draw only this scene file (repeatable); default: every chapters/<chapter>/scenes/*.json")
+    parser.add_argument("--sim", type=Path, default=SOURCE / "build/dev/tools/workbook-sim",
+                        help="reference simulator (default: %(default)s)")
+    parser.add_argument("--student", action="store_true", help="also run the student's simulator and overlay it")
+    parser.add_argument("--student-sim", type=Path, default=SOURCE / "build/dev/tools/workbook-sim-student",
+                        help="the student's simulator (default: %(default)s)")
+    args = parser.parse_args()
+
+    scenes = args.scene or sorted((SOURCE / "chapters" / args.chapter / "scenes").glob("*.json"))
+    if not scenes:
+        sys.exit(f"figures.py: no scenes for chapter '{args.chapter}'")
+    have_reference = args.sim.is_file()
+    if not have_reference and not args.student:
+        sys.exit(f"figures.py: no reference simulator at {args.sim} (use --student to draw your own code)")
+    if args.student and not args.student_sim.is_file():
+        sys.exit(f"figures.py: no student simulator at {args.student_sim}")
+    args.out.mkdir(parents=True, exist_ok=True)
+
+    failures = 0
+    with tempfile.TemporaryDirectory() as scratch:
+        for scene in scenes:
+            stem = scene.stem + (".student" if args.student else "")
+            what = ("your code over the reference" if have_reference else "your code") if args.student else "reference"
+            print(f"figures: {args.chapter}/{scene.name} ({what}) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
+            try:
+                reference = student = None
+                if have_reference:
+                    path = Path(scratch, scene.stem + ".csv") if args.student else args.out / (stem + ".csv")
+                    reference = (path, run_scene(args.sim, scene, path))
+                if args.student:
+                    path = args.out / (stem + ".csv")
+                    student = (path, run_scene(args.student_sim, scene, path))
+                draw(scene, args.out, stem, reference, student)
+            except (RuntimeError, OSError, ValueError, KeyError) as error:
+                print(f"figures: error: {error}", file=sys.stderr)
+                failures += 1
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
