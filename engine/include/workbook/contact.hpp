@@ -27,9 +27,9 @@ struct ContactPoint {
 struct Contact {
     std::uint32_t body1 = 0;  ///< index of body 1 in the world
     std::uint32_t body2 = 0;  ///< index of body 2 in the world
-    Vector3 normal{1.0, 0.0, 0.0};
-    std::array<ContactPoint, max_contact_points> points{};
-    std::uint8_t point_count = 0;
+    Vector3 normal{1.0, 0.0, 0.0};  ///< unit vector from body 2 towards body 1
+    std::array<ContactPoint, max_contact_points> points{};  ///< the first `point_count` entries are valid
+    std::uint8_t point_count = 0;  ///< number of valid entries in `points`
     double penetration = 0.0;  ///< deepest penetration over all points, m
 
     /// Appends a point and keeps `penetration` the deepest one; ignores points past the capacity.

@@ -23,7 +23,9 @@ struct Probes {
     double response_energy_change = 0.0;  ///< kinetic energy change caused by this step's responses, J
     int contacts = 0;                 ///< contacts detected this step
 
+    /// Linear plus rotational kinetic energy, J.
     [[nodiscard]] double kinetic() const { return kinetic_linear + kinetic_rotational; }
+    /// Kinetic plus potential energy, J.
     [[nodiscard]] double total_energy() const { return kinetic() + potential; }
 };
 

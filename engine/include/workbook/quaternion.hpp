@@ -11,23 +11,28 @@ namespace workbook {
 
 /// Orientation as a quaternion w + xi + yj + zk; the identity is (1, 0, 0, 0).
 struct Quaternion {
-    double w = 1.0;
-    double x = 0.0;
-    double y = 0.0;
-    double z = 0.0;
+    double w = 1.0;  ///< scalar part
+    double x = 0.0;  ///< i component
+    double y = 0.0;  ///< j component
+    double z = 0.0;  ///< k component
 
+    /// Exact, component-wise equality.
     friend constexpr bool operator==(const Quaternion&, const Quaternion&) = default;
 };
 
+/// Hamilton product: the rotation b followed by a.
 constexpr Quaternion operator*(const Quaternion& a, const Quaternion& b) {
     return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
+/// The conjugate, which is the inverse rotation for a unit quaternion.
 constexpr Quaternion conjugate(const Quaternion& q) { return {q.w, -q.x, -q.y, -q.z}; }
 
+/// The quaternion's length.
 inline double norm(const Quaternion& q) { return std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z); }
 
+/// The unit quaternion along q.
 inline Quaternion normalized(const Quaternion& q) {
     const double n = norm(q);
     return {q.w / n, q.x / n, q.y / n, q.z / n};

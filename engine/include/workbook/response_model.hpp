@@ -18,9 +18,9 @@ using PositionCorrector = void (*)(RigidBody& body1, RigidBody& body2, const Con
 
 /// A named pair of stages. Either may be null: the world then skips that stage entirely.
 struct ResponseModel {
-    std::string_view name;
-    VelocityResponder respond = nullptr;
-    PositionCorrector correct = nullptr;
+    std::string_view name;                 ///< what scene files write in "responder"
+    VelocityResponder respond = nullptr;  ///< velocity stage, or null
+    PositionCorrector correct = nullptr;  ///< position stage, or null
 };
 
 /// Every response model the linked chapter code provides (the reference solutions or the

@@ -23,8 +23,9 @@ struct RigidBody {
     Vector3 velocity{};                          ///< m/s
     Vector3 angular_velocity{};                  ///< rad/s, world frame
     double restitution = 1.0;                    ///< coefficient of restitution e in [0, 1]
-    Shape shape{};
+    Shape shape{};                               ///< collision geometry, in body space
 
+    /// True for an immovable body (infinite mass, inverse_mass == 0).
     [[nodiscard]] bool is_immovable() const { return inverse_mass == 0.0; }
 
     /// Mass in kg; infinity for an immovable body.

@@ -16,12 +16,12 @@ namespace workbook {
 
 /// A scene file after validation: everything needed to build a World and run it.
 struct Scene {
-    std::string title;
-    std::string description;
+    std::string title;              ///< one line, shown on figures
+    std::string description;        ///< what the scene shows and what to expect
     std::string responder;          ///< name of a ResponseModel
-    WorldSettings settings;
+    WorldSettings settings;         ///< time step and gravity
     double duration = 0.0;          ///< s
-    std::vector<RigidBody> bodies;
+    std::vector<RigidBody> bodies;  ///< the bodies, in file order
     std::vector<std::string> body_names;  ///< parallel to bodies
 };
 
@@ -29,9 +29,12 @@ struct Scene {
 /// "carts.json: bodies[1].mass: must be a positive finite number, got -2".
 class SceneError : public std::runtime_error {
 public:
+    /// An error in `file` at JSON path `field` (may be empty), described by `problem`.
     SceneError(std::string file, std::string field, std::string problem);
+    /// The file (or source name) the error is in.
     [[nodiscard]] const std::string& file() const { return file_; }
     [[nodiscard]] const std::string& field() const { return field_; }    ///< JSON path such as "bodies[1].mass"; empty for syntax errors
+    /// What is wrong, in words.
     [[nodiscard]] const std::string& problem() const { return problem_; }
 
 private:

@@ -9,6 +9,7 @@
 
 namespace workbook {
 
+/// Which kind of geometry a Shape holds.
 enum class ShapeKind : std::uint8_t {
     sphere,  ///< a ball (a circle when the scene is planar)
     plane,   ///< an infinite plane through the body's position: walls and ground
@@ -17,13 +18,16 @@ enum class ShapeKind : std::uint8_t {
 
 /// The geometry of a body, in the body's own frame.
 struct Shape {
-    ShapeKind kind = ShapeKind::sphere;
+    ShapeKind kind = ShapeKind::sphere;  ///< which of the fields below apply
     double radius = 0.0;            ///< sphere only
     Vector3 normal{0.0, 1.0, 0.0};  ///< plane only: unit normal in body space, pointing out of the solid side
     Vector3 half_extents{};         ///< box only
 
+    /// A sphere of the given radius, m.
     static constexpr Shape sphere(double radius) { return {ShapeKind::sphere, radius, {}, {}}; }
+    /// A plane with the given unit normal (body space).
     static constexpr Shape plane(const Vector3& unit_normal) { return {ShapeKind::plane, 0.0, unit_normal, {}}; }
+    /// A box with the given half extents, m.
     static constexpr Shape box(const Vector3& half_extents) { return {ShapeKind::box, 0.0, {}, half_extents}; }
 };
 

@@ -31,21 +31,28 @@ struct WorldSettings {
 /// Storage is sized when the world is built; after the first step no stage allocates.
 class World {
 public:
+    /// A world of `bodies` that steps with `settings` and answers contacts with `model`.
     World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model);
 
     /// Runs the four stages once and advances the clock.
     void step();
 
-    void integrate();
-    void detect();
-    void respond();
-    void correct();
+    void integrate();  ///< stage 1: gravity, then positions and orientations
+    void detect();     ///< stage 2: fills contacts() with every overlapping pair
+    void respond();    ///< stage 3: the model's velocity responder, once per contact
+    void correct();    ///< stage 4: the model's position corrector, once per contact
 
+    /// Simulated time since the start, s.
     [[nodiscard]] double time() const { return time_; }
+    /// The fixed settings.
     [[nodiscard]] const WorldSettings& settings() const { return settings_; }
+    /// The response model in use.
     [[nodiscard]] const ResponseModel& model() const { return model_; }
+    /// The bodies, in scene order.
     [[nodiscard]] std::span<const RigidBody> bodies() const { return bodies_; }
+    /// The bodies, writable (for tests and tools).
     [[nodiscard]] std::span<RigidBody> bodies() { return bodies_; }
+    /// The contacts found by the last detect().
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
 
     /// Probes of the current state, including what the last respond() did to kinetic energy.
