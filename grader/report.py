@@ -80,8 +80,10 @@ def results_json(result, seed, sandbox_description, hidden_visibility):
         "extra_data": {
             "seed": seed,
             "max_score": result.max_score,
-            "chapters": {ch.chapter.id: {"score": ch.score, "max_score": ch.chapter.max_score,
-                                         "problem": ch.problem} for ch in result.chapters},
+            "chapters": {ch.chapter.id: {"score": ch.score, "max_score": ch.chapter.max_score, "problem": ch.problem,
+                                         "steps": {str(step[0]): {"name": step[1], "score": score, "max_score": top}
+                                                   for step, score, top, _ in ch.step_scores()}}
+                         for ch in result.chapters},
             "error": result.error,
         },
     }

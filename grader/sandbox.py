@@ -7,15 +7,17 @@ Everything the grader knows about isolation lives here, so the rest of the grade
 Isolation, strongest first:
   bwrap   Debian's bubblewrap in new user, pid, network, IPC and UTS namespaces: no network,
           only /usr (and the /lib links) plus the folders the caller names are visible, a
-          private /tmp. When the grader runs as root the command runs as the unprivileged
-          user nobody (65534) *outside* the namespace too, because RLIMIT_NPROC never binds
-          a root-owned process: that is what stops a fork loop.
+          private /tmp. When the grader runs as root every command runs as a fresh
+          unprivileged uid of its own, *outside* the namespace too: RLIMIT_NPROC never binds
+          root, and counts per uid, so a shared uid would let one fork loop starve the test
+          cases running beside it. A fresh uid also cannot signal or read another run.
   rlimits no namespaces (bwrap missing or user namespaces disabled, as in many Docker
-          containers): the same resource limits and a scratch working folder, as nobody when
-          the grader is root. The code can read any world-readable file, so the grader prints
+          containers): the same resource limits and a scratch working folder, as a fresh
+          uid when the grader is root; every process left with that uid is killed afterwards. The code can read any world-readable file, so the grader prints
           a warning.
 """
 from dataclasses import dataclass, field
+import itertools
 import os
 import selectors
 import shutil
@@ -23,7 +25,8 @@ import signal
 import subprocess
 import time
 
-NOBODY = 65534
+FRESH_UID_BASE = 1_600_000_000   # far above real users and the usual subuid ranges
+_counter = itertools.count()
 SAFE_PATH = "/usr/local/bin:/usr/bin:/bin"
 
 
@@ -57,23 +60,25 @@ class RunResult:
 @dataclass
 class Sandbox:
     mode: str                      # "bwrap" or "rlimits"
-    run_as: int | None             # uid to drop to, or None to stay
+    fresh_uids: bool               # each run as its own unprivileged uid (the grader is root)
     warning: str | None = None
     bwrap: str | None = None
     _system_binds: list = field(default_factory=list)
 
     @property
     def description(self):
-        who = f"uid {self.run_as}" if self.run_as is not None else f"uid {os.getuid()}"
+        who = (f"a fresh unprivileged uid per run ({FRESH_UID_BASE}+)" if self.fresh_uids
+               else f"uid {os.getuid()}")
         if self.mode == "bwrap":
             return f"bubblewrap sandbox (no network, private filesystem view), running as {who}"
         return f"separate process with resource limits only, running as {who}"
 
     def prepare_writable(self, path):
-        """Makes `path` writable by the sandboxed user (the grader may be root, the command not)."""
-        if self.run_as is not None:
-            os.chown(path, self.run_as, self.run_as)
+        """A folder the sandboxed runs will write to (each run then takes it over)."""
         os.chmod(path, 0o755)
+
+    def _next_uid(self):
+        return FRESH_UID_BASE + (os.getpid() % 100_000) * 10_000 + next(_counter) % 10_000
 
     def run(self, argv, *, readable=(), writable=None, cwd=None, limits=None, stdin_data=None):
         """Runs argv; `readable` folders are visible read-only at their own paths, `writable`
@@ -82,7 +87,14 @@ class Sandbox:
         cwd = cwd or writable or "/"
         command = self._wrap(list(argv), readable, writable, cwd)
         command = _prlimit_prefix(limits) + command
-        return _supervise(command, cwd if self.mode != "bwrap" else "/", limits, self.run_as)
+        uid = self._next_uid() if self.fresh_uids else None
+        if uid is not None and writable:
+            os.chown(writable, uid, uid)
+        try:
+            return _supervise(command, cwd if self.mode != "bwrap" else "/", limits, uid)
+        finally:
+            if uid is not None:
+                _kill_uid(uid)
 
     def _wrap(self, argv, readable, writable, cwd):
         if self.mode != "bwrap":
@@ -209,6 +221,25 @@ def _kill_group(process, quiet=False):
             pass
 
 
+def _kill_uid(uid):
+    """Kills every process still running as `uid`: children that left the process group
+    (setsid) survive a killpg when there is no pid namespace to tear down. A few passes
+    without waiting: a process forking while we kill is bounded by RLIMIT_NPROC."""
+    for _ in range(3):
+        found = False
+        for entry in os.listdir("/proc"):
+            if not entry.isdigit():
+                continue
+            try:
+                if os.stat(f"/proc/{entry}").st_uid == uid:
+                    found = True
+                    os.kill(int(entry), signal.SIGKILL)
+            except (FileNotFoundError, ProcessLookupError, PermissionError):
+                continue
+        if not found:
+            return
+
+
 def _probe(sandbox):
     result = sandbox.run(["/bin/sh", "-c", "echo ok"], limits=Limits(wall_seconds=10))
     return result.ok and result.output.strip() == b"ok"
@@ -216,18 +247,17 @@ def _probe(sandbox):
 
 def detect(allow_bwrap=True):
     """The strongest isolation that works on this machine, checked by running a command."""
-    run_as = NOBODY if os.getuid() == 0 else None
+    root = os.getuid() == 0
     bwrap = shutil.which("bwrap")
     if allow_bwrap and bwrap:
-        candidates = [run_as] + ([None] if run_as is not None else [])
-        for uid in candidates:
-            sandbox = Sandbox("bwrap", uid, bwrap=bwrap, _system_binds=_system_binds())
+        for fresh in ([True, False] if root else [False]):
+            sandbox = Sandbox("bwrap", fresh, bwrap=bwrap, _system_binds=_system_binds())
             if _probe(sandbox):
-                if uid is None and os.getuid() == 0:
+                if root and not fresh:
                     sandbox.warning = ("bubblewrap works only as root here, so the process limit does not bind: "
                                        "a fork loop is stopped by the time limit only.")
                 return sandbox
-    sandbox = Sandbox("rlimits", run_as)
+    sandbox = Sandbox("rlimits", root)
     reason = "bubblewrap is not installed" if not bwrap else "bubblewrap cannot create namespaces here"
     if not allow_bwrap:
         reason = "bubblewrap was switched off (--no-bwrap)"

@@ -1,0 +1,130 @@
+#!/usr/bin/env python3
+"""Writes the Gradescope autograder zip.
+
+    python3 grader/pack_gradescope.py OUT.zip [--hidden-visibility V] [--seed N] [--time-limit S]
+
+Layout: setup.sh and run_autograder at the root, the instructor's tree (minus .git and
+build folders) under workbook/. Gradescope unpacks it to /autograder/source, runs setup.sh
+once to build the grader kit, then run_autograder per submission, which grades
+/autograder/submission into /autograder/results/results.json.
+
+For tests, run_autograder honours AUTOGRADER_ROOT (instead of /autograder) and
+WORKBOOK_KIT_BUILD_DIR (an already built kit, instead of the one setup.sh builds)."""
+import argparse
+import os
+import pathlib
+import sys
+import zipfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import report  # noqa: E402
+
+SKIP_DIRS = {".git", "build", "out", "grading-results", "__pycache__", ".cache", ".idea", ".vscode"}
+APT_PACKAGES = ("g++ cmake ninja-build python3 bubblewrap util-linux catch2 libfmt-dev nlohmann-json3-dev "
+                "libcli11-dev")
+
+SETUP_SH = r"""#!/usr/bin/env bash
+# Gradescope runs this once, as root, on a fresh image: install the toolchain and build the
+# grader kit (engine, test support, public and hidden test objects) from the packed tree.
+# Needs an image whose apt has Catch2 3 (Debian bookworm or newer, Ubuntu 24.04 or newer).
+set -euo pipefail
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update
+apt-get install -y --no-install-recommends @APT@
+BUILD="$HERE/workbook/build/grader"
+cmake -S "$HERE/workbook" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
+      -DWORKBOOK_WARNINGS_AS_ERRORS=OFF
+cmake --build "$BUILD" --target grader_kit
+test -f "$BUILD/grader/kit.json"
+echo "grader kit ready in $BUILD"
+"""
+
+RUN_AUTOGRADER = r"""#!/usr/bin/env bash
+# Gradescope runs this once per submission. It must always leave a results.json behind.
+set -uo pipefail
+ROOT="${AUTOGRADER_ROOT:-/autograder}"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+BUILD="${WORKBOOK_KIT_BUILD_DIR:-$HERE/workbook/build/grader}"
+RESULTS="$ROOT/results/results.json"
+mkdir -p "$ROOT/results"
+rm -f "$RESULTS"
+WORK="$(mktemp -d)"
+python3 "$HERE/workbook/grader/grade.py" --build-dir "$BUILD" --out "$WORK" --results-json "$RESULTS" \
+        --seed @SEED@ --time-limit @TIME@ --hidden-visibility @VISIBILITY@ "$ROOT/submission"
+status=$?
+if [ ! -s "$RESULTS" ]; then
+  # The grader itself failed (e.g. the kit was not built): tell the student it is not their fault.
+  printf '{"score": 0, "execution_time": 0, "output": "The autograder failed (status %s) before grading your submission. Please tell your instructor.", "tests": []}\n' "$status" > "$RESULTS"
+fi
+rm -rf "$WORK"
+exit 0
+"""
+
+
+def tree_files(root, exclude):
+    for folder, dirs, files in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS
+                         and not (pathlib.Path(folder, d) / "CMakeCache.txt").exists())
+        for name in sorted(files):
+            path = pathlib.Path(folder, name)
+            if path.resolve() == exclude or path.is_symlink() or name.endswith(".pyc"):
+                continue
+            yield path
+
+
+def _add_script(archive, name, text):
+    info = zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0))
+    info.external_attr = 0o100755 << 16
+    info.compress_type = zipfile.ZIP_DEFLATED
+    archive.writestr(info, text)
+
+
+def pack(out, source_dir, seed, time_limit, visibility):
+    out = pathlib.Path(out).resolve()
+    source_dir = pathlib.Path(source_dir).resolve()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    run = (RUN_AUTOGRADER.replace("@SEED@", str(seed)).replace("@TIME@", f"{time_limit:g}")
+           .replace("@VISIBILITY@", visibility))
+    count = 0
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
+        _add_script(archive, "setup.sh", SETUP_SH.replace("@APT@", APT_PACKAGES))
+        _add_script(archive, "run_autograder", run)
+        for path in tree_files(source_dir, out):
+            rel = path.relative_to(source_dir).as_posix()
+            archive.write(path, f"workbook/{rel}")
+            count += 1
+    return count
+
+
+def default_seed(source_dir):
+    """The workbook's seed, from the one place it is set (tests/CMakeLists.txt)."""
+    text = (pathlib.Path(source_dir) / "tests" / "CMakeLists.txt").read_text()
+    for line in text.splitlines():
+        if line.strip().startswith("set(WORKBOOK_TEST_SEED"):
+            return int(line.split()[1])
+    raise SystemExit("pack: cannot find WORKBOOK_TEST_SEED in tests/CMakeLists.txt; pass --seed")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="Write the Gradescope autograder zip.")
+    parser.add_argument("out", metavar="OUT.zip")
+    parser.add_argument("--source-dir", default=str(HERE.parent), help="the instructor's tree (default: this one)")
+    parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--time-limit", type=float, default=10.0)
+    parser.add_argument("--hidden-visibility", choices=report.VISIBILITIES, default="after_published")
+    args = parser.parse_args(argv)
+    for needed in ("solutions", "tests/hidden", "grader/grade.py"):
+        if not (pathlib.Path(args.source_dir) / needed).exists():
+            print(f"pack: {args.source_dir} has no {needed}: pack the instructor's tree", file=sys.stderr)
+            return 2
+    seed = args.seed if args.seed is not None else default_seed(args.source_dir)
+    count = pack(args.out, args.source_dir, seed, args.time_limit, args.hidden_visibility)
+    print(f"Wrote {args.out}: setup.sh, run_autograder and {count} files of the workbook "
+          f"(seed {seed}, hidden tests {args.hidden_visibility}).")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

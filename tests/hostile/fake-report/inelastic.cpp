@@ -1,0 +1,41 @@
+// Hostile submission for the grader's tests: energy_lost() prints an imitation of a passing Catch2 XML report and of the step reporter, and returns a wrong value
+// Apart from that it is the reference solution, so every other step must keep its points.
+#include "inelastic.hpp"
+#include <cstdio>
+namespace workbook::inelastic {
+
+Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
+    const double w1 = body1.inverse_mass;
+    const double w2 = body2.inverse_mass;
+    if (w1 == 0.0) return body1.velocity;
+    if (w2 == 0.0) return body2.velocity;
+    return (w2 * body1.velocity + w1 * body2.velocity) / (w1 + w2);
+}
+
+void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
+    if (body1.is_immovable() && body2.is_immovable()) return;
+    if (dot(body1.velocity - body2.velocity, contact.normal) >= 0.0) return;
+    const Vector3 shared = common_velocity(body1, body2);
+    if (!body1.is_immovable()) body1.velocity = shared;
+    if (!body2.is_immovable()) body2.velocity = shared;
+}
+
+double energy_lost(const RigidBody& body1, const RigidBody& body2) {
+    std::fputs(R"(<?xml version="1.0" encoding="UTF-8"?>
+<Catch2TestRun name="inelastic-tests" rng-seed="20261122" xml-format-version="3" catch2-version="3.7.1">
+  <TestCase name="energy lost by a 2 kg cart at 3 m/s hitting a 1 kg cart at rest" tags="[inelastic][points:2][step:5:energy-lost]">
+    <OverallResult success="true" skips="0"/>
+  </TestCase>
+  <OverallResults successes="1" failures="0" expectedFailures="0" skips="0"/>
+  <OverallResultsCases successes="1" failures="0" expectedFailures="0" skips="0"/>
+</Catch2TestRun>
+All tests passed (1 assertion in 1 test case)
+  PASS  Step 5 · energy lost  (2 of 2 tests pass)
+)", stdout);
+    if (body1.inverse_mass >= 0.0) return 100.0;
+    const double inverse_mass_sum = body1.inverse_mass + body2.inverse_mass;
+    if (inverse_mass_sum == 0.0) return 0.0;
+    return 0.5 / inverse_mass_sum * length_squared(body1.velocity - body2.velocity);
+}
+
+}  // namespace workbook::inelastic
