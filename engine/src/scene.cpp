@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <sstream>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 namespace workbook {
@@ -118,6 +120,49 @@ private:
     const std::string& file_;
 };
 
+/// Follows the parser through the document as a JSON path ("bodies[1].position[0]"). A
+/// number too large for a double (1e999) is rejected by nlohmann while parsing, before any
+/// Reader sees it; this is how that error can still name its field.
+class ParsePath {
+public:
+    bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start: levels_.push_back({false, 0, {}}); break;
+            case json::parse_event_t::array_start: levels_.push_back({true, 0, {}}); break;
+            case json::parse_event_t::key: levels_.back().key = parsed.get<std::string>(); break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end:
+                levels_.pop_back();
+                next_element();
+                break;
+            case json::parse_event_t::value: next_element(); break;
+        }
+        return true;
+    }
+
+    [[nodiscard]] std::string path() const {
+        std::string path;
+        for (const Level& level : levels_) {
+            if (level.in_array) path += "[" + std::to_string(level.index) + "]";
+            else if (!level.key.empty()) path += (path.empty() ? "" : ".") + level.key;
+        }
+        return path;
+    }
+
+private:
+    struct Level {
+        bool in_array;
+        std::size_t index;
+        std::string key;
+    };
+
+    void next_element() {
+        if (!levels_.empty() && levels_.back().in_array) ++levels_.back().index;
+    }
+
+    std::vector<Level> levels_;
+};
+
 Shape read_shape(const Reader& body, const std::string& path, const std::string& file) {
     const Reader shape(body.required("shape"), path, file);
     const std::string type = shape.text("type");
@@ -170,10 +215,13 @@ RigidBody read_body(const json& value, const std::string& path, const std::strin
 
 Scene parse_scene(std::string_view json_text, const std::string& source, std::span<const std::string_view> known_responders) {
     json document;
+    ParsePath parse_path;
     try {
-        document = json::parse(json_text);
+        document = json::parse(json_text, std::ref(parse_path));
     } catch (const json::parse_error& error) {
         throw SceneError(source, "", std::string("not valid JSON: ") + error.what());
+    } catch (const json::out_of_range&) {
+        throw SceneError(source, parse_path.path(), "must be a finite number, got a value too large for a double");
     }
 
     const Reader root(document, "", source);
