@@ -1,5 +1,7 @@
 #include "workbook/detection.hpp"
 
+#include <utility>
+
 namespace workbook {
 
 std::optional<Contact> collide_spheres(const RigidBody& sphere1, const RigidBody& sphere2) {

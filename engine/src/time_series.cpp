@@ -29,7 +29,10 @@ const char* csv_header() {
 }
 
 void write_csv(std::ostream& out, const std::vector<Probes>& samples) {
+    // Shortest form at round-trip precision, whatever format the caller left on the stream.
+    const auto old_flags = out.flags();
     const auto old_precision = out.precision(std::numeric_limits<double>::max_digits10);
+    out.unsetf(std::ios::floatfield);
     out << csv_header() << '\n';
     for (const Probes& p : samples) {
         out << p.time << ',' << p.kinetic_linear << ',' << p.kinetic_rotational << ',' << p.potential << ','
@@ -38,6 +41,7 @@ void write_csv(std::ostream& out, const std::vector<Probes>& samples) {
             << p.angular_momentum.z << ',' << p.response_energy_change << ',' << p.contacts << '\n';
     }
     out.precision(old_precision);
+    out.flags(old_flags);
 }
 
 }  // namespace workbook
