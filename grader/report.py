@@ -99,6 +99,8 @@ def _case_output(result, ch, case):
         return f"not run: {result.error}"
     if ch.outcomes is None:
         text = f"not run: your {ch.chapter.source} {ch.problem}."
+        if case.hidden:  # the compiler's errors are shown once, with the visible tests
+            return text
         return text + ("\n" + ch.feedback if ch.feedback else "")
     outcome = ch.outcomes.get(case.name)
     if outcome is None:
