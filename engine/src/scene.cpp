@@ -225,7 +225,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
     }
 
     const Reader root(document, "", source);
-    root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "bodies"});
+    root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "integrator", "bodies"});
 
     Scene scene;
     scene.title = root.text("title");
@@ -245,6 +245,13 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
     if (scene.duration < scene.settings.time_step)
         root.fail("duration", "must be at least one time step (" + Reader::format(scene.settings.time_step) + " s)");
     scene.settings.gravity = root.vector_or("gravity", {});
+    const std::string integrator = root.text_or("integrator", "semi-implicit-euler");
+    if (integrator == "semi-implicit-euler")
+        scene.settings.integrator = Integrator::semi_implicit_euler;
+    else if (integrator == "explicit-euler")
+        scene.settings.integrator = Integrator::explicit_euler;
+    else
+        root.fail("integrator", "unknown integrator \"" + integrator + "\" (available: semi-implicit-euler, explicit-euler)");
 
     const json& bodies = root.required("bodies");
     if (!bodies.is_array() || bodies.empty()) root.fail("bodies", "must be a non-empty array of bodies");

@@ -39,8 +39,13 @@ void World::integrate() {
     const Vector3 gravity_kick = settings_.gravity * dt;
     for (RigidBody& body : bodies_) {
         if (body.is_immovable()) continue;
-        body.velocity += gravity_kick;
-        body.position += body.velocity * dt;
+        if (settings_.integrator == Integrator::semi_implicit_euler) {
+            body.velocity += gravity_kick;
+            body.position += body.velocity * dt;
+        } else {
+            body.position += body.velocity * dt;
+            body.velocity += gravity_kick;
+        }
         if (body.angular_velocity == Vector3{}) continue;
         body.orientation = workbook::integrate(body.orientation, body.angular_velocity, dt);
         body.update_world_inertia();

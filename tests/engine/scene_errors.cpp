@@ -89,7 +89,7 @@ TEST_CASE("unknown keys are named with their full path", "[scene][errors]") {
     SECTION("top level") {
         check_parts(error_from(scene_with(R"("time_step": 0.01, "duration": 1, "gravty": [0, -9.81, 0], )", valid_ball)),
                     "gravty",
-                    "unknown key (allowed here: title, description, responder, time_step, duration, gravity, bodies)");
+                    "unknown key (allowed here: title, description, responder, time_step, duration, gravity, integrator, bodies)");
     }
     SECTION("in a body") {
         check_parts(error_from(scene_with_second_body(
@@ -268,6 +268,14 @@ TEST_CASE("body-level rules: restitution, planes, immovable bodies, shapes", "[s
         check_parts(error_from(scene_with_second_body(R"({"shape": {"type": "cube", "size": 1}, "mass": 1})")),
                     "bodies[1].shape.type", R"(unknown shape type "cube" (supported: sphere, plane))");
     }
+}
+
+TEST_CASE("the integrator is one of the two the world has", "[scene][errors]") {
+    const std::string explicit_euler =
+        scene_with(R"("time_step": 0.01, "duration": 1, "integrator": "explicit-euler", )", valid_ball);
+    CHECK(parse_scene(explicit_euler, "good.json").settings.integrator == Integrator::explicit_euler);
+    const SceneError error = error_from(scene_with(R"("time_step": 0.01, "duration": 1, "integrator": "rk4", )", valid_ball));
+    check_parts(error, "integrator", R"(unknown integrator "rk4" (available: semi-implicit-euler, explicit-euler))");
 }
 
 TEST_CASE("an unknown responder is named with the ones that exist", "[scene][errors]") {

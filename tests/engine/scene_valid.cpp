@@ -48,6 +48,7 @@ TEST_CASE("a valid scene parses to its settings", "[scene]") {
     CHECK(scene.settings.time_step == 0.005);
     CHECK(scene.duration == 2.0);
     CHECK(scene.settings.gravity == Vector3{0, -9.81, 0});
+    CHECK(scene.settings.integrator == Integrator::semi_implicit_euler);  // the default
     REQUIRE(scene.bodies.size() == 4);
     CHECK(scene.body_names == std::vector<std::string>{"heavy", "bodies[1]", "ground", "post"});
 }

@@ -63,6 +63,24 @@ TEST_CASE("free fall: v = g n dt and x = x0 + g dt^2 n (n + 1) / 2 after n steps
     CHECK(world.bodies()[0].position == Vector3{1.0, 100.0 - 1000.0 * 1001.0 / 16384.0, -2.0});
 }
 
+TEST_CASE("explicit Euler free fall: x = x0 + g dt^2 n (n - 1) / 2, one step behind, exactly", "[world][integrate]") {
+    // Same exact arithmetic as above; explicit Euler moves with the old velocity, so the
+    // position lags the semi-implicit one by exactly g dt^2 n.
+    const double dt = 1.0 / 256.0;
+    const Vector3 g{0.0, -8.0, 0.0};
+    const Vector3 x0{1.0, 100.0, -2.0};
+    World world({make_sphere(1.0, 0.5, x0)}, WorldSettings{dt, g, Integrator::explicit_euler}, no_response);
+    for (int n = 1; n <= 1000; ++n) {
+        world.step();
+        const RigidBody& ball = world.bodies()[0];
+        const double steps = n;
+        if (ball.velocity != g * (steps * dt) || ball.position != x0 + g * (dt * dt * steps * (steps - 1) / 2)) {
+            CAPTURE(n, ball.velocity, ball.position);
+            FAIL("explicit Euler left its closed form");
+        }
+    }
+}
+
 TEST_CASE("free fall under Earth gravity matches the closed form to rounding", "[world][integrate]") {
     const double dt = 1.0 / 240.0;
     const Vector3 g{0.0, -9.81, 0.0};

@@ -3,6 +3,7 @@
 /// The world: bodies, a fixed time step and the explicit stages of one step.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -13,13 +14,23 @@
 
 namespace workbook {
 
+/// How integrate() advances velocities and positions over one step.
+enum class Integrator : std::uint8_t {
+    /// v += a dt, then x += v dt with the new v. Symplectic: energy errors stay bounded,
+    /// which is why every game engine uses it and why it is the default.
+    semi_implicit_euler,
+    /// x += v dt with the old v, then v += a dt. Gains energy steadily; kept to compare against.
+    explicit_euler,
+};
+
 /// Settings that do not change while a scene runs.
 struct WorldSettings {
     double time_step = 1.0 / 240.0;  ///< s
     Vector3 gravity{};               ///< m/s^2; the zero vector turns gravity off
+    Integrator integrator = Integrator::semi_implicit_euler;  ///< how integrate() advances the bodies
 };
 
-/// Steps a set of rigid bodies with semi-implicit Euler and the scene's response model.
+/// Steps a set of rigid bodies with the chosen integrator and the scene's response model.
 ///
 /// One step runs four stages in a fixed order, each callable on its own so that benchmarks
 /// can time them and scenes can skip what they do not need:
