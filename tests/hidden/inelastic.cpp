@@ -33,6 +33,8 @@ const Law immovable_law{"an immovable body (inverse mass 0) has infinite mass",
                         "use inverse masses; when both are 0 leave both bodies as they are"};
 const Law separating_law{"only approaching bodies collide", "when dot(v1 - v2, n) >= 0 the velocities stay exactly as they are",
                          "test dot(body1.velocity - body2.velocity, contact.normal) >= 0 before changing anything"};
+const Law approach_law{"an approaching pair must be resolved", "after resolve, dot(v1' - v2', n) >= 0: the pair no longer approaches",
+                      "leave a pair alone only when dot(v1 - v2, n) >= 0; when it is < 0 the bodies must still merge"};
 const Law energy_law{"energy lost in a perfectly inelastic collision", "Delta E = 1/2 mu |v1 - v2|^2, mu = 1 / (1/m1 + 1/m2)",
                      "with an immovable body mu is the other body's mass; with two, nothing is lost"};
 
@@ -74,6 +76,19 @@ bool vectors_within(const Vector3& a, const Vector3& b, double tolerance) {
 }
 
 bool same_bits(const Vector3& a, const Vector3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/// The approaching half of step 4, judged by step 4's own law (the pair stops approaching),
+/// so that a step 2 mistake is not reported a second time here. It also keeps an empty
+/// resolve() from passing step 4.
+void expect_no_longer_approaching(SeededRandom& random, int index) {
+    Pair towards = random_pair(random, true);
+    const Pair before = towards;
+    inelastic::resolve(towards.body1, towards.body2, towards.contact);
+    const double speed = length(before.body1.velocity) + length(before.body2.velocity);
+    workbook::testing::expect_at_least(approach_law, 0.0, dot(towards.body1.velocity - towards.body2.velocity, towards.contact.normal),
+                                       rounding_tolerance(speed), "m/s",
+                                       case_text(before, index) + " (approaching: normal relative velocity after)");
+}
 
 }  // namespace
 
@@ -201,11 +216,7 @@ TEST_CASE("random pairs already moving apart keep their velocities exactly, appr
             return;
         }
     }
-    Pair towards = random_pair(random, true);
-    const Pair before = towards;
-    inelastic::resolve(towards.body1, towards.body2, towards.contact);
-    workbook::testing::expect_close(separating_law, Vector3{}, towards.body1.velocity - towards.body2.velocity,
-                                    rounding_tolerance(100.0), "m/s", case_text(before, -1) + " (approaching: must merge)");
+    expect_no_longer_approaching(random, -1);
 }
 
 TEST_CASE("equal velocities are not a collision", "[inelastic][step:4:separating-pairs][points:1]") {
@@ -218,11 +229,7 @@ TEST_CASE("equal velocities are not a collision", "[inelastic][step:4:separating
                                     case_text(before, 0) + " (body 1 after)");
     workbook::testing::expect_close(separating_law, before.body2.velocity, p.body2.velocity, 0.0, "m/s",
                                     case_text(before, 0) + " (body 2 after)");
-    Pair towards = random_pair(random, true);
-    const Pair towards_before = towards;
-    inelastic::resolve(towards.body1, towards.body2, towards.contact);
-    workbook::testing::expect_close(separating_law, Vector3{}, towards.body1.velocity - towards.body2.velocity,
-                                    rounding_tolerance(100.0), "m/s", case_text(towards_before, 1) + " (approaching: must merge)");
+    expect_no_longer_approaching(random, 1);
 }
 
 TEST_CASE("random pairs: the energy lost is 1/2 mu |v1 - v2|^2", "[inelastic][step:5:energy-lost][points:3]") {

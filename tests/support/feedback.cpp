@@ -54,6 +54,15 @@ void expect_close(const Law& law, const Vector3& expected, const Vector3& actual
     report(law, format(expected), format(actual), unit, situation);
 }
 
+void expect_at_least(const Law& law, double minimum, double actual, double tolerance, std::string_view unit,
+                     std::string_view situation) {
+    if (std::isfinite(actual) && actual >= minimum - tolerance) {
+        SUCCEED();
+        return;
+    }
+    report(law, "at least " + format(minimum), format(actual), unit, situation);
+}
+
 void expect_finite(const Law& law, const Vector3& value, std::string_view unit, std::string_view situation) {
     if (is_finite(value)) {
         SUCCEED();

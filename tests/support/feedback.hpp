@@ -27,6 +27,10 @@ void expect_close(const Law& law, double expected, double actual, double toleran
 void expect_close(const Law& law, const Vector3& expected, const Vector3& actual, double tolerance,
                   std::string_view unit, std::string_view situation);
 
+/// Passes when actual >= minimum - tolerance: for one-sided laws such as "no longer approaching".
+void expect_at_least(const Law& law, double minimum, double actual, double tolerance, std::string_view unit,
+                     std::string_view situation);
+
 /// Fails when any component of `value` is NaN or infinite.
 void expect_finite(const Law& law, const Vector3& value, std::string_view unit, std::string_view situation);
 
