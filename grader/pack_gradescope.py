@@ -13,6 +13,7 @@ WORKBOOK_KIT_BUILD_DIR (an already built kit, instead of the one setup.sh builds
 import argparse
 import os
 import pathlib
+import subprocess
 import sys
 import zipfile
 
@@ -64,6 +65,16 @@ exit 0
 
 
 def tree_files(root, exclude):
+    """The files git knows of (tracked, or new and not ignored), like the student pack; a tree
+    that is not a git checkout (an unpacked release) is walked instead."""
+    try:
+        from pack_student import tracked_files
+        listed = [root / relative for relative in tracked_files(root)]
+    except (OSError, subprocess.CalledProcessError):
+        listed = None
+    if listed is not None:
+        yield from (p for p in listed if p.is_file() and not p.is_symlink() and p.resolve() != exclude)
+        return
     for folder, dirs, files in os.walk(root):
         dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS
                          and not (pathlib.Path(folder, d) / "CMakeCache.txt").exists())
