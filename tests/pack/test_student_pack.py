@@ -67,6 +67,17 @@ class StudentPackTest(unittest.TestCase):
             leaked = significant_lines(path) & secret
             self.assertFalse(leaked, f"{path.relative_to(self.pack)} holds secret lines: {sorted(leaked)[:3]}")
 
+    def test_the_quick_start_of_the_pack_works(self):
+        for command in (["./workbook", "book"], ["./workbook", "test"]):
+            run = subprocess.run(command, cwd=self.pack, capture_output=True, text=True, timeout=1800)
+            self.assertEqual(run.returncode, 0, f"{' '.join(command)} failed in the pack:\n{(run.stdout + run.stderr)[-3000:]}")
+        site = self.pack / "build/dev/book/site/html/chapter_inelastic.html"
+        self.assertTrue(site.is_file(), "the site has no chapter 1 page")
+        self.assertTrue((self.pack / "build/dev/book/figures/inelastic/head-on-carts.student.svg").is_file(),
+                        "the pack draws its figures from the student's code")
+        self.assertIn("tests: ", run.stdout)
+        self.assertIn(" 0 failed", run.stdout)
+
     def test_the_pack_builds_from_scratch_and_check_fails_every_step_of_the_skeleton(self):
         for chapter in pack_student_chapters(self.pack):
             run = subprocess.run(["./workbook", "check", chapter], cwd=self.pack, capture_output=True, text=True, timeout=1200)
