@@ -20,6 +20,8 @@ import time
 import unittest
 import zipfile
 
+from compose import compose
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GRADE = ROOT / "grader" / "grade.py"
 PACK = ROOT / "grader" / "pack_gradescope.py"
@@ -102,7 +104,12 @@ class Batch:
         expect = json.loads((folder / "expect.json").read_text())
         chapter = chapter or expect.get("chapter") or next(
             c for c in chapter_ids() if (folder / source_name(c)).exists())
-        self._folder(name, {source_name(chapter): folder / source_name(chapter)})
+        # Cases hold only what differs from the reference; the submission is the composition.
+        source = source_name(chapter)
+        reference = ROOT / "solutions" / source
+        composed = compose(reference.read_text(), (folder / source).read_text(), f"solutions/{source}")
+        submission = self._folder(name, {})
+        (submission / source).write_text(composed)
         self.expect[name] = (chapter, expect)
 
 

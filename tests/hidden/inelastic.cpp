@@ -10,33 +10,19 @@
 
 #include "feedback.hpp"
 #include "inelastic.hpp"
+#include "../steps/inelastic_laws.hpp"
 #include "seeded_random.hpp"
 #include "workbook/probes.hpp"
 
 using namespace workbook;
+namespace laws = workbook::inelastic_laws;
 using workbook::testing::describe;
-using workbook::testing::Law;
 using workbook::testing::rounding_tolerance;
 using workbook::testing::SeededRandom;
 
 namespace {
 
 constexpr int random_cases = 2000;
-
-const Law momentum_law{"conservation of linear momentum", "m1 v1 + m2 v2 must be the same before and after, to rounding",
-                       "weight each velocity by its mass; with inverse masses (w2 v1 + w1 v2) / (w1 + w2) stays exact "
-                       "even when one mass is a million times the other"};
-const Law stick_law{"perfectly inelastic bodies stick together", "after the collision v1' = v2', in every component",
-                    "give both bodies the same common velocity, the whole vector"};
-const Law immovable_law{"an immovable body (inverse mass 0) has infinite mass",
-                        "it keeps its velocity, the other body takes it, and nothing becomes NaN",
-                        "use inverse masses; when both are 0 leave both bodies as they are"};
-const Law separating_law{"only approaching bodies collide", "when dot(v1 - v2, n) >= 0 the velocities stay exactly as they are",
-                         "test dot(body1.velocity - body2.velocity, contact.normal) >= 0 before changing anything"};
-const Law approach_law{"an approaching pair must be resolved", "after resolve, dot(v1' - v2', n) >= 0: the pair no longer approaches",
-                      "leave a pair alone only when dot(v1 - v2, n) >= 0; when it is < 0 the bodies must still merge"};
-const Law energy_law{"energy lost in a perfectly inelastic collision", "Delta E = 1/2 mu |v1 - v2|^2, mu = 1 / (1/m1 + 1/m2)",
-                     "with an immovable body mu is the other body's mass; with two, nothing is lost"};
 
 /// A random pair: masses spread over twelve decades around a random scale, 3D velocities.
 struct Pair {
@@ -85,7 +71,7 @@ void expect_no_longer_approaching(SeededRandom& random, int index) {
     const Pair before = towards;
     inelastic::resolve(towards.body1, towards.body2, towards.contact);
     const double speed = length(before.body1.velocity) + length(before.body2.velocity);
-    workbook::testing::expect_at_least(approach_law, 0.0, dot(towards.body1.velocity - towards.body2.velocity, towards.contact.normal),
+    workbook::testing::expect_at_least(laws::approach, 0.0, dot(towards.body1.velocity - towards.body2.velocity, towards.contact.normal),
                                        rounding_tolerance(speed), "m/s",
                                        case_text(before, index) + " (approaching: normal relative velocity after)");
 }
@@ -101,7 +87,7 @@ TEST_CASE("random pairs over twelve decades of mass ratio: the common velocity k
         const Vector3 after = (p.body1.mass() + p.body2.mass()) * shared;
         const double tolerance = rounding_tolerance(momentum_scale(p.body1, p.body2));
         if (!vectors_within(momentum(p.body1, p.body2), after, tolerance)) {
-            workbook::testing::expect_close(momentum_law, momentum(p.body1, p.body2), after, tolerance, "kg m/s", case_text(p, i));
+            workbook::testing::expect_close(laws::momentum, momentum(p.body1, p.body2), after, tolerance, "kg m/s", case_text(p, i));
             return;
         }
     }
@@ -116,7 +102,7 @@ TEST_CASE("equal velocities have that velocity as their common velocity", "[inel
         const Vector3 shared = inelastic::common_velocity(p.body1, p.body2);
         const double tolerance = rounding_tolerance(length(p.body1.velocity));
         if (!vectors_within(p.body1.velocity, shared, tolerance)) {
-            workbook::testing::expect_close(momentum_law, p.body1.velocity, shared, tolerance, "m/s", case_text(p, i));
+            workbook::testing::expect_close(laws::momentum, p.body1.velocity, shared, tolerance, "m/s", case_text(p, i));
             return;
         }
     }
@@ -131,13 +117,13 @@ TEST_CASE("random approaching pairs leave together with their momentum", "[inela
         inelastic::resolve(p.body1, p.body2, p.contact);
         const double speed = std::max(length(before.body1.velocity), length(before.body2.velocity));
         if (!vectors_within(p.body1.velocity, p.body2.velocity, rounding_tolerance(speed))) {
-            workbook::testing::expect_close(stick_law, Vector3{}, p.body1.velocity - p.body2.velocity, rounding_tolerance(speed),
+            workbook::testing::expect_close(laws::stick, Vector3{}, p.body1.velocity - p.body2.velocity, rounding_tolerance(speed),
                                             "m/s", case_text(before, i) + " (relative velocity after)");
             return;
         }
         const double tolerance = rounding_tolerance(momentum_scale(before.body1, before.body2));
         if (!vectors_within(momentum(before.body1, before.body2), momentum(p.body1, p.body2), tolerance)) {
-            workbook::testing::expect_close(momentum_law, momentum(before.body1, before.body2), momentum(p.body1, p.body2),
+            workbook::testing::expect_close(laws::momentum, momentum(before.body1, before.body2), momentum(p.body1, p.body2),
                                             tolerance, "kg m/s", case_text(before, i) + " (total momentum after resolve)");
             return;
         }
@@ -163,12 +149,12 @@ TEST_CASE("an immovable body on either side, moving or at rest, sets the common 
         const RigidBody& free_after = (i % 2 == 0) ? p.body2 : p.body1;
         const std::string side = (i % 2 == 0) ? " (body 1 immovable)" : " (body 2 immovable)";
         if (!same_bits(fixed_after.velocity, platform)) {
-            workbook::testing::expect_close(immovable_law, platform, fixed_after.velocity, 0.0, "m/s",
+            workbook::testing::expect_close(laws::immovable, platform, fixed_after.velocity, 0.0, "m/s",
                                             case_text(before, i) + side + ": the immovable body's velocity after");
             return;
         }
         if (!vectors_within(free_after.velocity, platform, rounding_tolerance(length(platform) + 1.0))) {
-            workbook::testing::expect_close(immovable_law, platform, free_after.velocity, rounding_tolerance(length(platform) + 1.0),
+            workbook::testing::expect_close(laws::immovable, platform, free_after.velocity, rounding_tolerance(length(platform) + 1.0),
                                             "m/s", case_text(before, i) + side + ": the movable body's velocity after");
             return;
         }
@@ -184,13 +170,13 @@ TEST_CASE("two immovable bodies: nothing changes and nothing is NaN", "[inelasti
     contact.normal = {-1, 0, 0};
     contact.add_point({0.75, 0, 0}, 0.5);
     const std::string situation = "body 1: " + describe(wall1) + "; body 2: " + describe(wall2);
-    workbook::testing::expect_finite(immovable_law, inelastic::common_velocity(wall1, wall2), "m/s",
+    workbook::testing::expect_finite(laws::immovable, inelastic::common_velocity(wall1, wall2), "m/s",
                                      situation + ": common_velocity");
     const Vector3 v1 = wall1.velocity;
     const Vector3 v2 = wall2.velocity;
     inelastic::resolve(wall1, wall2, contact);
-    workbook::testing::expect_close(immovable_law, v1, wall1.velocity, 0.0, "m/s", situation + ": body 1 after resolve");
-    workbook::testing::expect_close(immovable_law, v2, wall2.velocity, 0.0, "m/s", situation + ": body 2 after resolve");
+    workbook::testing::expect_close(laws::immovable, v1, wall1.velocity, 0.0, "m/s", situation + ": body 1 after resolve");
+    workbook::testing::expect_close(laws::immovable, v2, wall2.velocity, 0.0, "m/s", situation + ": body 2 after resolve");
     // And a movable body against a wall must still stop, so that an empty resolve() cannot pass.
     RigidBody wall = make_immovable_sphere(1.0, {0, 0, 0});
     RigidBody mover = make_sphere(3.0, 0.5, {1.4, 0, 0}, {-4, 2, 0});
@@ -199,7 +185,7 @@ TEST_CASE("two immovable bodies: nothing changes and nothing is NaN", "[inelasti
     hit.add_point({1.0, 0, 0}, 0.1);
     const std::string hit_text = "body 1: " + describe(mover) + "; body 2: " + describe(wall);
     inelastic::resolve(mover, wall, hit);
-    workbook::testing::expect_close(immovable_law, Vector3{}, mover.velocity, 0.0, "m/s", hit_text + ": body 1 after resolve");
+    workbook::testing::expect_close(laws::immovable, Vector3{}, mover.velocity, 0.0, "m/s", hit_text + ": body 1 after resolve");
 }
 
 TEST_CASE("random pairs already moving apart keep their velocities exactly, approaching ones do not",
@@ -210,7 +196,7 @@ TEST_CASE("random pairs already moving apart keep their velocities exactly, appr
         const Pair before = apart;
         inelastic::resolve(apart.body1, apart.body2, apart.contact);
         if (!same_bits(apart.body1.velocity, before.body1.velocity) || !same_bits(apart.body2.velocity, before.body2.velocity)) {
-            workbook::testing::expect_close(separating_law, before.body1.velocity - before.body2.velocity,
+            workbook::testing::expect_close(laws::separating, before.body1.velocity - before.body2.velocity,
                                             apart.body1.velocity - apart.body2.velocity, 0.0, "m/s",
                                             case_text(before, i) + " (moving apart: relative velocity after)");
             return;
@@ -225,9 +211,9 @@ TEST_CASE("equal velocities are not a collision", "[inelastic][step:4:separating
     p.body2.velocity = p.body1.velocity;
     const Pair before = p;
     inelastic::resolve(p.body1, p.body2, p.contact);
-    workbook::testing::expect_close(separating_law, before.body1.velocity, p.body1.velocity, 0.0, "m/s",
+    workbook::testing::expect_close(laws::separating, before.body1.velocity, p.body1.velocity, 0.0, "m/s",
                                     case_text(before, 0) + " (body 1 after)");
-    workbook::testing::expect_close(separating_law, before.body2.velocity, p.body2.velocity, 0.0, "m/s",
+    workbook::testing::expect_close(laws::separating, before.body2.velocity, p.body2.velocity, 0.0, "m/s",
                                     case_text(before, 0) + " (body 2 after)");
     expect_no_longer_approaching(random, 1);
 }
@@ -242,7 +228,7 @@ TEST_CASE("random pairs: the energy lost is 1/2 mu |v1 - v2|^2", "[inelastic][st
         const double actual = inelastic::energy_lost(p.body1, p.body2);
         const double tolerance = 1e-12 * expected;
         if (!(std::abs(actual - expected) <= tolerance)) {
-            workbook::testing::expect_close(energy_law, expected, actual, tolerance, "J", case_text(p, i));
+            workbook::testing::expect_close(laws::energy, expected, actual, tolerance, "J", case_text(p, i));
             return;
         }
     }
@@ -253,9 +239,9 @@ TEST_CASE("energy lost against immovable bodies", "[inelastic][step:5:energy-los
     const RigidBody ball = make_sphere(2.5, 0.5, {0, 0, 0}, {1, -2, 2});
     const RigidBody wall = make_immovable_sphere(1.0, {1.4, 0, 0});
     const std::string situation = "body 1: " + describe(ball) + "; body 2: " + describe(wall);
-    workbook::testing::expect_close(energy_law, kinetic_energy(ball), inelastic::energy_lost(ball, wall), 1e-12, "J", situation);
-    workbook::testing::expect_close(energy_law, kinetic_energy(ball), inelastic::energy_lost(wall, ball), 1e-12, "J",
+    workbook::testing::expect_close(laws::energy, kinetic_energy(ball), inelastic::energy_lost(ball, wall), 1e-12, "J", situation);
+    workbook::testing::expect_close(laws::energy, kinetic_energy(ball), inelastic::energy_lost(wall, ball), 1e-12, "J",
                                     situation + " (bodies in the other order)");
     const RigidBody wall2 = make_immovable_sphere(1.0, {-1.4, 0, 0});
-    workbook::testing::expect_close(energy_law, 0.0, inelastic::energy_lost(wall, wall2), 0.0, "J", "two immovable bodies");
+    workbook::testing::expect_close(laws::energy, 0.0, inelastic::energy_lost(wall, wall2), 0.0, "J", "two immovable bodies");
 }

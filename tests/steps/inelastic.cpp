@@ -4,30 +4,15 @@
 
 #include "feedback.hpp"
 #include "inelastic.hpp"
+#include "inelastic_laws.hpp"
 #include "workbook/probes.hpp"
 
 using namespace workbook;
+namespace laws = workbook::inelastic_laws;
 using workbook::testing::describe;
 using workbook::testing::expect_close;
-using workbook::testing::Law;
 
 namespace {
-
-const Law momentum_law{"conservation of linear momentum", "m1 v1 + m2 v2 must be the same before and after",
-                       "weight each velocity by its mass: (m1 v1 + m2 v2) / (m1 + m2); with inverse masses "
-                       "w = 1/m that is (w2 v1 + w1 v2) / (w1 + w2)"};
-const Law stick_law{"perfectly inelastic bodies stick together", "after the collision v1' = v2', in every component",
-                    "assign the common velocity to body1.velocity AND body2.velocity, the whole vector"};
-const Law immovable_law{"an immovable body (inverse mass 0) has infinite mass",
-                        "it keeps its velocity and the other body takes that velocity",
-                        "write the common velocity with inverse masses; with two immovable bodies return "
-                        "before dividing by w1 + w2 = 0"};
-const Law separating_law{"only approaching bodies collide", "when dot(v1 - v2, n) >= 0 the velocities stay as they are",
-                         "compute dot(body1.velocity - body2.velocity, contact.normal) first and return when it is >= 0"};
-const Law approach_law{"an approaching pair must be resolved", "after resolve, dot(v1' - v2', n) >= 0: the pair no longer approaches",
-                      "leave a pair alone only when dot(v1 - v2, n) >= 0; when it is < 0 the bodies must still merge"};
-const Law energy_law{"energy lost in a perfectly inelastic collision", "Delta E = 1/2 mu |v1 - v2|^2, mu = m1 m2 / (m1 + m2)",
-                     "mu = 1 / (w1 + w2) with inverse masses; square the length of the whole relative velocity"};
 
 RigidBody ball(double mass, Vector3 position, Vector3 velocity) { return make_sphere(mass, 0.5, position, velocity); }
 
@@ -48,7 +33,7 @@ Vector3 momentum(const RigidBody& a, const RigidBody& b) { return a.mass() * a.v
 TEST_CASE("common velocity of a 2 kg cart at 3 m/s and a 1 kg cart at rest", "[inelastic][step:1:common-velocity][points:2]") {
     const RigidBody cart1 = ball(2.0, {0, 0, 0}, {3, 0, 0});
     const RigidBody cart2 = ball(1.0, {0.9, 0, 0}, {0, 0, 0});
-    expect_close(momentum_law, Vector3{2, 0, 0}, inelastic::common_velocity(cart1, cart2), 1e-12, "m/s",
+    expect_close(laws::momentum, Vector3{2, 0, 0}, inelastic::common_velocity(cart1, cart2), 1e-12, "m/s",
                  pair_text(cart1, cart2));
 }
 
@@ -57,7 +42,7 @@ TEST_CASE("the common velocity carries the total momentum, in 3D", "[inelastic][
     const RigidBody body2 = ball(3.0, {0.5, 0.5, 0}, {-1, 2, 0.5});
     const Vector3 shared = inelastic::common_velocity(body1, body2);
     const Vector3 before = momentum(body1, body2);
-    expect_close(momentum_law, before, (body1.mass() + body2.mass()) * shared, 1e-12, "kg m/s", pair_text(body1, body2));
+    expect_close(laws::momentum, before, (body1.mass() + body2.mass()) * shared, 1e-12, "kg m/s", pair_text(body1, body2));
 }
 
 TEST_CASE("head-on carts leave together", "[inelastic][step:2:stick-together][points:2]") {
@@ -66,8 +51,8 @@ TEST_CASE("head-on carts leave together", "[inelastic][step:2:stick-together][po
     const std::string situation = pair_text(cart1, cart2);
     const Contact contact = contact_between(cart1, cart2);
     inelastic::resolve(cart1, cart2, contact);
-    expect_close(stick_law, Vector3{}, cart1.velocity - cart2.velocity, 1e-12, "m/s", situation + " (relative velocity v1' - v2' after)");
-    expect_close(momentum_law, Vector3{3, 0, 0}, cart1.mass() * cart1.velocity + cart2.mass() * cart2.velocity, 1e-12,
+    expect_close(laws::stick, Vector3{}, cart1.velocity - cart2.velocity, 1e-12, "m/s", situation + " (relative velocity v1' - v2' after)");
+    expect_close(laws::momentum, Vector3{3, 0, 0}, cart1.mass() * cart1.velocity + cart2.mass() * cart2.velocity, 1e-12,
                  "kg m/s", situation);
 }
 
@@ -77,7 +62,7 @@ TEST_CASE("an oblique crash merges the whole velocity, not only its normal part"
     const std::string situation = pair_text(car1, car2);
     const Contact contact = contact_between(car1, car2);
     inelastic::resolve(car1, car2, contact);
-    expect_close(stick_law, Vector3{}, car1.velocity - car2.velocity, 1e-9, "m/s", situation + " (relative velocity v1' - v2' after)");
+    expect_close(laws::stick, Vector3{}, car1.velocity - car2.velocity, 1e-9, "m/s", situation + " (relative velocity v1' - v2' after)");
 }
 
 TEST_CASE("a ball hitting an immovable wall stops against it", "[inelastic][step:3:immovable-bodies][points:2]") {
@@ -86,8 +71,8 @@ TEST_CASE("a ball hitting an immovable wall stops against it", "[inelastic][step
     const std::string situation = pair_text(ball1, wall);
     const Contact contact = contact_between(ball1, wall);
     inelastic::resolve(ball1, wall, contact);
-    expect_close(immovable_law, Vector3{}, wall.velocity, 0.0, "m/s", situation + " (the wall's velocity after)");
-    expect_close(immovable_law, Vector3{}, ball1.velocity, 0.0, "m/s", situation + " (the ball's velocity after)");
+    expect_close(laws::immovable, Vector3{}, wall.velocity, 0.0, "m/s", situation + " (the wall's velocity after)");
+    expect_close(laws::immovable, Vector3{}, ball1.velocity, 0.0, "m/s", situation + " (the ball's velocity after)");
 }
 
 TEST_CASE("an immovable body on either side, and two immovable bodies", "[inelastic][step:3:immovable-bodies][points:2]") {
@@ -96,12 +81,12 @@ TEST_CASE("an immovable body on either side, and two immovable bodies", "[inelas
     RigidBody ball2 = ball(5.0, {0, 1.4, 0}, {0, -2, 0});
     const std::string situation = pair_text(platform, ball2);
     inelastic::resolve(platform, ball2, contact_between(platform, ball2));
-    expect_close(immovable_law, Vector3{}, ball2.velocity, 0.0, "m/s", situation + " (the ball, body 2, after)");
+    expect_close(laws::immovable, Vector3{}, ball2.velocity, 0.0, "m/s", situation + " (the ball, body 2, after)");
 
     RigidBody wall1 = make_immovable_sphere(1.0, {0, 0, 0});
     RigidBody wall2 = make_immovable_sphere(1.0, {1.5, 0, 0});
     const Vector3 before_common = inelastic::common_velocity(wall1, wall2);
-    workbook::testing::expect_finite(immovable_law, before_common, "m/s", "two immovable bodies: common_velocity");
+    workbook::testing::expect_finite(laws::immovable, before_common, "m/s", "two immovable bodies: common_velocity");
 }
 
 TEST_CASE("a pair already moving apart is left alone, its mirror image is not", "[inelastic][step:4:separating-pairs][points:2]") {
@@ -109,8 +94,8 @@ TEST_CASE("a pair already moving apart is left alone, its mirror image is not", 
     RigidBody right = ball(1.0, {0.45, 0, 0}, {1, 0, 0});
     const std::string apart = pair_text(right, left);
     inelastic::resolve(right, left, contact_between(right, left));
-    expect_close(separating_law, Vector3{1, 0, 0}, right.velocity, 0.0, "m/s", apart + " (body 1 after)");
-    expect_close(separating_law, Vector3{-2, 0, 0}, left.velocity, 0.0, "m/s", apart + " (body 2 after)");
+    expect_close(laws::separating, Vector3{1, 0, 0}, right.velocity, 0.0, "m/s", apart + " (body 1 after)");
+    expect_close(laws::separating, Vector3{-2, 0, 0}, left.velocity, 0.0, "m/s", apart + " (body 2 after)");
 
     left.velocity = {2, 0, 0};
     right.velocity = {-1, 0, 0};
@@ -118,14 +103,14 @@ TEST_CASE("a pair already moving apart is left alone, its mirror image is not", 
     const Contact contact = contact_between(right, left);
     inelastic::resolve(right, left, contact);
     // Checked with step 4's own law, so that a step 2 mistake is not reported here as well.
-    workbook::testing::expect_at_least(approach_law, 0.0, dot(right.velocity - left.velocity, contact.normal), 1e-12,
+    workbook::testing::expect_at_least(laws::approach, 0.0, dot(right.velocity - left.velocity, contact.normal), 1e-12,
                                        "m/s", towards + " (approaching: normal relative velocity after)");
 }
 
 TEST_CASE("energy lost by a 2 kg cart at 3 m/s hitting a 1 kg cart at rest", "[inelastic][step:5:energy-lost][points:2]") {
     const RigidBody cart1 = ball(2.0, {0, 0, 0}, {3, 0, 0});
     const RigidBody cart2 = ball(1.0, {0.9, 0, 0}, {0, 0, 0});
-    expect_close(energy_law, 3.0, inelastic::energy_lost(cart1, cart2), 1e-12, "J", pair_text(cart1, cart2));
+    expect_close(laws::energy, 3.0, inelastic::energy_lost(cart1, cart2), 1e-12, "J", pair_text(cart1, cart2));
 }
 
 TEST_CASE("energy lost matches the kinetic energy that disappears", "[inelastic][step:5:energy-lost][points:2]") {
@@ -133,8 +118,8 @@ TEST_CASE("energy lost matches the kinetic energy that disappears", "[inelastic]
     const RigidBody body2 = ball(4.0, {0.3, 0.3, 0.3}, {-2, 0.5, 1});
     const double mu = body1.mass() * body2.mass() / (body1.mass() + body2.mass());
     const double expected = 0.5 * mu * length_squared(body1.velocity - body2.velocity);
-    expect_close(energy_law, expected, inelastic::energy_lost(body1, body2), 1e-12, "J", pair_text(body1, body2));
+    expect_close(laws::energy, expected, inelastic::energy_lost(body1, body2), 1e-12, "J", pair_text(body1, body2));
     const RigidBody wall = make_immovable_sphere(1.0, {2, 0, 0});
-    expect_close(energy_law, kinetic_energy(body1), inelastic::energy_lost(body1, wall), 1e-12, "J",
+    expect_close(laws::energy, kinetic_energy(body1), inelastic::energy_lost(body1, wall), 1e-12, "J",
                  pair_text(body1, wall) + " (against a wall all kinetic energy is lost)");
 }

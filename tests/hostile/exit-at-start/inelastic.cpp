@@ -1,35 +1,11 @@
 // Hostile submission for the grader's tests: calls exit(0) while the program starts, before any test runs
-// Apart from that it is the reference solution, so every other step must keep its points.
-#include "inelastic.hpp"
+// Only what differs from the reference is here; tests/grader/compose.py adds the rest.
 #include <cstdlib>
 namespace workbook::inelastic {
+
 namespace {
 // Runs during static initialisation, before Catch2 has written anything.
 const int quit_now = (std::exit(0), 0);
 }  // namespace
-Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
-
-    const double w1 = body1.inverse_mass;
-    const double w2 = body2.inverse_mass;
-    if (w1 == 0.0) return body1.velocity;
-    if (w2 == 0.0) return body2.velocity;
-    return (w2 * body1.velocity + w1 * body2.velocity) / (w1 + w2);
-}
-
-void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
-
-    if (body1.is_immovable() && body2.is_immovable()) return;
-    if (dot(body1.velocity - body2.velocity, contact.normal) >= 0.0) return;
-    const Vector3 shared = common_velocity(body1, body2);
-    if (!body1.is_immovable()) body1.velocity = shared;
-    if (!body2.is_immovable()) body2.velocity = shared;
-}
-
-double energy_lost(const RigidBody& body1, const RigidBody& body2) {
-
-    const double inverse_mass_sum = body1.inverse_mass + body2.inverse_mass;
-    if (inverse_mass_sum == 0.0) return 0.0;
-    return 0.5 / inverse_mass_sum * length_squared(body1.velocity - body2.velocity);
-}
 
 }  // namespace workbook::inelastic

@@ -1,24 +1,7 @@
 // Hostile submission for the grader's tests: energy_lost() returns NaN
-// Apart from that it is the reference solution, so every other step must keep its points.
-#include "inelastic.hpp"
+// Only what differs from the reference is here; tests/grader/compose.py adds the rest.
 #include <cmath>
 namespace workbook::inelastic {
-
-Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
-    const double w1 = body1.inverse_mass;
-    const double w2 = body2.inverse_mass;
-    if (w1 == 0.0) return body1.velocity;
-    if (w2 == 0.0) return body2.velocity;
-    return (w2 * body1.velocity + w1 * body2.velocity) / (w1 + w2);
-}
-
-void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
-    if (body1.is_immovable() && body2.is_immovable()) return;
-    if (dot(body1.velocity - body2.velocity, contact.normal) >= 0.0) return;
-    const Vector3 shared = common_velocity(body1, body2);
-    if (!body1.is_immovable()) body1.velocity = shared;
-    if (!body2.is_immovable()) body2.velocity = shared;
-}
 
 double energy_lost(const RigidBody& body1, const RigidBody& body2) {
     if (body1.inverse_mass >= 0.0) return std::nan("");

@@ -1,10 +1,8 @@
 // Hostile submission for the grader's tests: looks for the reference solution and the hidden tests, while compiling and while running, and gives wrong answers if it finds one
-// Apart from that it is the reference solution, so every other step must keep its points.
-#include "inelastic.hpp"
+// Only what differs from the reference is here; tests/grader/compose.py adds the rest.
 #include <cstdio>
 #include <string>
 #include <unistd.h>
-
 // Relative to the header folder chapters/inelastic, and to the submission's own folder.
 #if __has_include("../../solutions/inelastic.cpp") || __has_include("../../tests/hidden/inelastic.cpp") || \
     __has_include("../solutions/inelastic.cpp") || __has_include("../../../solutions/inelastic.cpp")
@@ -13,6 +11,7 @@
 #define SECRETS_SEEN_WHILE_COMPILING 0
 #endif
 namespace workbook::inelastic {
+
 namespace {
 
 /// The first secret file the running code can open (printed), or an empty string.
@@ -37,22 +36,6 @@ std::string readable_secret() {
 }
 
 }  // namespace
-
-Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
-    const double w1 = body1.inverse_mass;
-    const double w2 = body2.inverse_mass;
-    if (w1 == 0.0) return body1.velocity;
-    if (w2 == 0.0) return body2.velocity;
-    return (w2 * body1.velocity + w1 * body2.velocity) / (w1 + w2);
-}
-
-void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
-    if (body1.is_immovable() && body2.is_immovable()) return;
-    if (dot(body1.velocity - body2.velocity, contact.normal) >= 0.0) return;
-    const Vector3 shared = common_velocity(body1, body2);
-    if (!body1.is_immovable()) body1.velocity = shared;
-    if (!body2.is_immovable()) body2.velocity = shared;
-}
 
 double energy_lost(const RigidBody& body1, const RigidBody& body2) {
     if (SECRETS_SEEN_WHILE_COMPILING || !readable_secret().empty()) return -1.0;

@@ -1,26 +1,11 @@
 // Mutant of chapter 1 for the grader's tests: resolve() gives the common velocity to body 1 only
-#include "inelastic.hpp"
-
+// Only what differs from the reference is here; tests/grader/compose.py adds the rest.
 namespace workbook::inelastic {
-
-Vector3 common_velocity(const RigidBody& body1, const RigidBody& body2) {
-    const double w1 = body1.inverse_mass;
-    const double w2 = body2.inverse_mass;
-    if (w1 == 0.0) return body1.velocity;
-    if (w2 == 0.0) return body2.velocity;
-    return (w2 * body1.velocity + w1 * body2.velocity) / (w1 + w2);
-}
 
 void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
     if (body1.is_immovable() && body2.is_immovable()) return;
     if (dot(body1.velocity - body2.velocity, contact.normal) >= 0.0) return;
     body1.velocity = common_velocity(body1, body2);  // body 2 forgotten
-}
-
-double energy_lost(const RigidBody& body1, const RigidBody& body2) {
-    const double inverse_mass_sum = body1.inverse_mass + body2.inverse_mass;
-    if (inverse_mass_sum == 0.0) return 0.0;
-    return 0.5 / inverse_mass_sum * length_squared(body1.velocity - body2.velocity);
 }
 
 }  // namespace workbook::inelastic
