@@ -19,7 +19,7 @@ struct Scene {
     std::string title;              ///< one line, shown on figures
     std::string description;        ///< what the scene shows and what to expect
     std::string responder;          ///< name of a ResponseModel
-    WorldSettings settings;         ///< time step and gravity
+    WorldSettings settings;         ///< time step, gravity and integrator
     double duration = 0.0;          ///< s
     std::vector<RigidBody> bodies;  ///< the bodies, in file order
     std::vector<std::string> body_names;  ///< parallel to bodies

@@ -17,7 +17,7 @@ namespace workbook {
 /// How integrate() advances velocities and positions over one step.
 enum class Integrator : std::uint8_t {
     /// v += a dt, then x += v dt with the new v. Symplectic: energy errors stay bounded,
-    /// which is why every game engine uses it and why it is the default.
+    /// which is why most game engines use it and why it is the default.
     semi_implicit_euler,
     /// x += v dt with the old v, then v += a dt. Gains energy steadily; kept to compare against.
     explicit_euler,
