@@ -143,15 +143,14 @@ def gnuplot_panels(title, responder, datasets, reference, student):
          "set xlabel 't / s'"]
     if hit is not None:
         t_hit = main["t"][hit]
-        g += [f"set arrow 1 from {t_hit!r}, graph 0 to {t_hit!r}, graph 1 @impact_style",
-              f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note"]
+        impact_label = f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note"
+        g += [f"set arrow 1 from {t_hit!r}, graph 0 to {t_hit!r}, graph 1 @impact_style", impact_label]
 
     # Energy panel, with the drop at impact marked and labelled by its measured value.
     g += ["set title 'Energy'", f"set ylabel 'E / {e_unit}'", f"set yrange [{e_lo!r}:{e_hi!r}]"]
     if hit is not None:
-        base = (reference or student)[1]
-        drop = base["response_energy_change"][hit]
-        before = base["total"][hit - 1] * e_factor
+        drop = main["response_energy_change"][hit]
+        before = main["total"][hit - 1] * e_factor
         after = before + drop * e_factor
         t_arrow = t_hit + 0.012 * t_end  # just right of the step, so that the curve does not hide it
         if drop != 0.0:
@@ -176,7 +175,7 @@ def gnuplot_panels(title, responder, datasets, reference, student):
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
     g += ["plot " + ", \\\n     ".join(plot), "unset arrow 2", "unset label"]
     if hit is not None:
-        g.append(f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note")
+        g.append(impact_label)  # the energy labels are gone, the impact keeps its own
 
     # Momentum panel: linear momentum on the left axis, angular momentum (if any) on the right.
     g += ["set title 'Momentum'", f"set ylabel 'p / ({p_unit})'", f"set yrange [{p_lo!r}:{p_hi!r}]"]

@@ -1,5 +1,5 @@
 # The one look every workbook figure shares. plots/figures.py loads this file first, then
-# picks a terminal from the term_* strings below, so fonts, sizes, colours, line widths,
+# picks a terminal with the use_* strings below, so fonts, sizes, colours, line widths,
 # grid and key placement are decided here and nowhere else.
 
 # ---- Terminals: one per output format, all the same 12:5 shape ---------------------------
