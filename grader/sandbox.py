@@ -7,14 +7,16 @@ Everything the grader knows about isolation lives here, so the rest of the grade
 Isolation, strongest first:
   bwrap   Debian's bubblewrap in new user, pid, network, IPC and UTS namespaces: no network,
           only /usr (and the /lib links) plus the folders the caller names are visible, a
-          private /tmp. When the grader runs as root every command runs as a fresh
-          unprivileged uid of its own, *outside* the namespace too: RLIMIT_NPROC never binds
-          root, and counts per uid, so a shared uid would let one fork loop starve the test
-          cases running beside it. A fresh uid also cannot signal or read another run.
+          private /tmp. The resource limits are set inside the namespace, where RLIMIT_NPROC
+          counts the sandbox's own processes, not all of the grader's uid (a desktop session
+          alone has more than 64). It never binds root, so when the grader runs as root every
+          command runs as a fresh unprivileged uid of its own, *outside* the namespace too;
+          a fresh uid also cannot signal or read another run.
   rlimits no namespaces (bwrap missing or user namespaces disabled, as in many Docker
           containers): the same resource limits and a scratch working folder, as a fresh
-          uid when the grader is root; every process left with that uid is killed afterwards. The code can read any world-readable file, so the grader prints
-          a warning.
+          uid when the grader is root; every process left with that uid is killed
+          afterwards. The code can read any world-readable file, so the grader prints a
+          warning.
 """
 from dataclasses import dataclass, field
 import itertools
@@ -35,7 +37,7 @@ class Limits:
     wall_seconds: float = 10.0
     memory_bytes: int = 1 << 30          # address space; ignored for sanitizer builds
     file_bytes: int = 16 << 20           # largest file the command may write (the report)
-    processes: int = 64                  # per sandbox (bwrap) or per user (rlimits)
+    processes: int = 64                  # per sandbox (bwrap) or per uid (rlimits)
     output_bytes: int = 1 << 20          # more output than this is a flood: the run is stopped
     keep_output_bytes: int = 64 << 10    # how much of stdout+stderr is kept for feedback
     address_space_limit: bool = True
@@ -85,8 +87,9 @@ class Sandbox:
         (one folder) read-write; cwd defaults to `writable`."""
         limits = limits or Limits()
         cwd = cwd or writable or "/"
-        command = self._wrap(list(argv), readable, writable, cwd)
-        command = _prlimit_prefix(limits) + command
+        # Inside bwrap the limits are set after the user namespace exists, so RLIMIT_NPROC
+        # counts this sandbox's processes only, not every process of the grader's uid.
+        command = self._wrap(_prlimit_prefix(limits) + list(argv), readable, writable, cwd)
         uid = self._next_uid() if self.fresh_uids else None
         if uid is not None and writable:
             os.chown(writable, uid, uid)
