@@ -109,11 +109,17 @@ def _safe(name):
 
 
 def unique_names(paths):
-    names, seen = [], {}
+    """Folder names under --out: distinct even when a name plus a suffix is itself submitted
+    (x, x, x-2), and never '..' or the gradebook."""
+    names, taken = [], {"gradebook.csv", "gradebook.csv.tmp"}
     for path in paths:
-        base = _safe(submissions.display_name(path))
-        seen[base] = seen.get(base, 0) + 1
-        names.append(base if seen[base] == 1 else f"{base}-{seen[base]}")
+        base = _safe(submissions.display_name(path)).strip(".") or "submission"
+        name, count = base, 1
+        while name in taken:
+            count += 1
+            name = f"{base}-{count}"
+        taken.add(name)
+        names.append(name)
     return names
 
 
