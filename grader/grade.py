@@ -66,8 +66,8 @@ class Grader:
             traceback.print_exc(file=sys.stderr)
             result.error = f"internal grader error: {type(error).__name__}: {error}"
         finally:
-            if self.args.keep_work:
-                result.notes.append(f"build folder kept: {work}")
+            if self.args.keep_work:  # printed, not a note: notes reach the student's results.json
+                print(f"{name}: build folder kept: {work}", file=sys.stderr, flush=True)
             else:
                 shutil.rmtree(work, ignore_errors=True)
         if result.error:
@@ -101,7 +101,8 @@ class Grader:
             result.chapters.append(report.ChapterResult(chapter, outcomes, source=origin))
 
     def close(self):
-        shutil.rmtree(self.work_root, ignore_errors=True)
+        if not self.args.keep_work:
+            shutil.rmtree(self.work_root, ignore_errors=True)
 
 
 def _safe(name):
