@@ -16,9 +16,12 @@ class ChapterResult:
     feedback: str | None = None        # the compiler's first errors
     source: str = "submitted"          # or "missing: graded as the untouched skeleton"
 
-    def case_score(self, case):
+    def passed(self, case):
         outcome = (self.outcomes or {}).get(case.name)
-        return case.points if outcome is not None and outcome.passed else 0.0
+        return outcome is not None and outcome.passed
+
+    def case_score(self, case):
+        return case.points if self.passed(case) else 0.0
 
     @property
     def score(self):
@@ -60,14 +63,14 @@ def case_title(chapter, step, case):
 def results_json(result, seed, sandbox_description, hidden_visibility):
     tests = []
     for ch in result.chapters:
-        for step_index, (step, _, _, cases) in enumerate(ch.step_scores(), start=1):
+        for step, cases in ch.chapter.steps().items():
             for case_index, case in enumerate(cases, start=1):
                 tests.append({
                     "name": case_title(ch.chapter, step, case),
                     "number": f"{ch.chapter.number}.{step[0]}.{case_index}",
                     "score": ch.case_score(case),
                     "max_score": case.points,
-                    "status": "passed" if ch.case_score(case) == case.points and _passed(ch, case) else "failed",
+                    "status": "passed" if ch.passed(case) else "failed",
                     "output": _case_output(result, ch, case),
                     "visibility": hidden_visibility if case.hidden else "visible",
                 })
@@ -87,11 +90,6 @@ def results_json(result, seed, sandbox_description, hidden_visibility):
             "error": result.error,
         },
     }
-
-
-def _passed(ch, case):
-    outcome = (ch.outcomes or {}).get(case.name)
-    return outcome is not None and outcome.passed
 
 
 def _case_output(result, ch, case):
@@ -147,7 +145,7 @@ def summary(result):
             mark = "PASS" if score == max_score else "FAIL"
             lines.append(f"    {mark}  Step {step[0]} {step[1].replace('-', ' ')}: "
                          f"{fmt_points(score)} / {fmt_points(max_score)}")
-            failed = [c for c in cases if not _passed(ch, c)]
+            failed = [c for c in cases if not ch.passed(c)]
             for case in failed[:2]:
                 first = ch.outcomes[case.name].feedback.strip().splitlines()[:1] if case.name in ch.outcomes else []
                 hidden = " (hidden)" if case.hidden else ""
