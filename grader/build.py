@@ -2,6 +2,7 @@
 
 Both run in the sandbox: the compiler sees only the header folders and the student's file,
 so `#include "../solutions/..."` or an absolute path into tests/hidden finds nothing."""
+import dataclasses
 from dataclasses import dataclass
 import os
 import re
@@ -24,7 +25,7 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     """`source` is the student's file already copied into `folder` (a fresh folder)."""
     obj = os.path.join(folder, chapter.id + ".o")
     binary = os.path.join(folder, chapter.id + "-tests")
-    limits = _limits(kit, COMPILE_LIMITS)
+    limits = limits_for(kit, COMPILE_LIMITS)
     compile_cmd = [kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-c", source, "-o", obj]
     run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits)
     if not run.ok or not os.path.isfile(obj):
@@ -46,10 +47,10 @@ def _outside(kit):
     return sorted(folders)
 
 
-def _limits(kit, limits):
-    if kit.sanitize:
-        return Limits(**{**limits.__dict__, "address_space_limit": False})
-    return limits
+def limits_for(kit, limits):
+    """AddressSanitizer reserves terabytes of address space, so a sanitizer kit cannot have
+    RLIMIT_AS."""
+    return dataclasses.replace(limits, address_space_limit=False) if kit.sanitize else limits
 
 
 def _first_errors(run, kit, folder, what):

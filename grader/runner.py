@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import os
 import signal as signals
 
-from build import _limits
+from build import limits_for
 import catch_xml
 from sandbox import Limits
 
@@ -42,7 +42,7 @@ def escape_test_name(name):
 
 def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs):
     """{test case name: Outcome} for every test case of the chapter."""
-    limits = _limits(kit, limits)
+    limits = limits_for(kit, limits)
     folder = os.path.dirname(binary)
 
     def one(index_case):
@@ -64,11 +64,10 @@ def run_case(sandbox, binary, folder, case, scratch, seed, limits):
     argv = [binary, escape_test_name(case.name), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
     run = sandbox.run(argv, readable=[folder], writable=scratch, limits=limits)
     printed = _printed(run.output, run.output_total)
-    found = _read_report(report, case.name)
-    return Outcome(*judge(run, found, limits, printed))
+    return Outcome(*judge(run, _read_report(report, case.name), limits, printed))
 
 
-def judge(run, found, limits, printed):
+def judge(run, case, limits, printed):
     """(passed, feedback) from how the process ended and what its report says."""
     if run.error:
         return False, f"the test could not be started: {run.error}"
@@ -78,7 +77,6 @@ def judge(run, found, limits, printed):
     if run.flooded:
         return False, (f"your code printed more than {limits.output_bytes // 1024} KiB of output, so the test "
                        f"was stopped{printed}")
-    case, report_problem = found
     if run.signal is not None:
         reason = SIGNAL_NAMES.get(run.signal, "")
         name = _signal_name(run.signal)
@@ -98,17 +96,13 @@ def judge(run, found, limits, printed):
 
 
 def _read_report(path, name):
-    """(CaseResult or None, problem); None unless the report is complete and names the case once."""
+    """The CaseResult, or None unless the report is complete and names only this case."""
     try:
         with open(path, "rb") as file:
-            text = file.read(8 << 20)
-        cases = catch_xml.parse(text)
-    except (OSError, ValueError) as error:
-        return None, str(error)
-    matching = [c for c in cases if c.name == name]
-    if len(cases) != 1 or len(matching) != 1:
-        return None, f"the report lists {len(cases)} test cases"
-    return matching[0], None
+            cases = catch_xml.parse(file.read(8 << 20))
+    except (OSError, ValueError):
+        return None
+    return cases[0] if len(cases) == 1 and cases[0].name == name else None
 
 
 def _failures(case):
