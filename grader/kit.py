@@ -10,6 +10,7 @@ import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "tools"))
 import catch_xml  # noqa: E402
+import workbook_files  # noqa: E402
 
 
 class KitError(Exception):
@@ -106,7 +107,7 @@ def _check_chapter_list(kit):
     listed = kit.source_dir / "chapters" / "CHAPTERS"
     if not listed.is_file():
         return
-    ids = [line.strip() for line in listed.read_text().splitlines() if line.strip() and not line.strip().startswith("#")]
+    ids = workbook_files.chapters(kit.source_dir)
     in_kit = [c.id for c in kit.chapters]
     if ids != in_kit:
         kit.warnings.append(f"chapters/CHAPTERS lists {ids} but the kit was built for {in_kit}: rebuild the kit")

@@ -19,7 +19,9 @@ import zipfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "tools"))
 import report  # noqa: E402
+import workbook_files  # noqa: E402
 
 SKIP_DIRS = {".git", "build", "out", "grading-results", "__pycache__", ".cache", ".idea", ".vscode"}
 APT_PACKAGES = ("g++ cmake ninja-build python3 bubblewrap util-linux catch2 libfmt-dev nlohmann-json3-dev "
@@ -109,15 +111,6 @@ def pack(out, source_dir, seed, time_limit, visibility):
     return count
 
 
-def default_seed(source_dir):
-    """The workbook's seed, from the one place it is set (tests/CMakeLists.txt)."""
-    text = (pathlib.Path(source_dir) / "tests" / "CMakeLists.txt").read_text()
-    for line in text.splitlines():
-        if line.strip().startswith("set(WORKBOOK_TEST_SEED"):
-            return int(line.split()[1])
-    raise SystemExit("pack: cannot find WORKBOOK_TEST_SEED in tests/CMakeLists.txt; pass --seed")
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Write the Gradescope autograder zip.")
     parser.add_argument("out", metavar="OUT.zip")
@@ -130,7 +123,7 @@ def main(argv=None):
         if not (pathlib.Path(args.source_dir) / needed).exists():
             print(f"pack: {args.source_dir} has no {needed}: pack the instructor's tree", file=sys.stderr)
             return 2
-    seed = args.seed if args.seed is not None else default_seed(args.source_dir)
+    seed = args.seed if args.seed is not None else workbook_files.random_seed(args.source_dir)
     count = pack(args.out, args.source_dir, seed, args.time_limit, args.hidden_visibility)
     print(f"Wrote {args.out}: setup.sh, run_autograder and {count} files of the workbook "
           f"(seed {seed}, hidden tests {args.hidden_visibility}).")

@@ -35,9 +35,18 @@ def is_excluded(relative):
 
 
 def tracked_files(root):
-    listing = subprocess.run(["git", "-C", str(root), "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-                             capture_output=True, check=True)
-    return sorted(p for p in listing.stdout.decode().split("\0") if p)
+    """Every file git tracks, plus new files it does not ignore: an instructor's uncommitted
+    hidden test must not silently go missing from a pack. The new ones are named on stderr,
+    so that a stray folder (build-asan/, notes) is noticed before the pack is handed out."""
+    def listing(*options):
+        run = subprocess.run(["git", "-C", str(root), "ls-files", "-z", *options], capture_output=True, check=True)
+        return {p for p in run.stdout.decode().split("\0") if p}
+
+    untracked = listing("--others", "--exclude-standard")
+    if untracked:
+        shown = ", ".join(sorted(untracked)[:8]) + (f" and {len(untracked) - 8} more" if len(untracked) > 8 else "")
+        print(f"note: also packing {len(untracked)} file(s) git does not track yet: {shown}", file=sys.stderr)
+    return sorted(listing("--cached") | untracked)
 
 
 def write_pack(out, root=ROOT):

@@ -22,6 +22,9 @@ import zipfile
 
 from compose import compose
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools"))
+import workbook_files  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GRADE = ROOT / "grader" / "grade.py"
 PACK = ROOT / "grader" / "pack_gradescope.py"
@@ -34,8 +37,7 @@ VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 
 
 def chapter_ids():
-    lines = (ROOT / "chapters" / "CHAPTERS").read_text().splitlines()
-    return [line.strip() for line in lines if line.strip() and not line.strip().startswith("#")]
+    return workbook_files.chapters(ROOT)
 
 
 def source_name(chapter):

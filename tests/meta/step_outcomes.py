@@ -17,7 +17,7 @@ def main():
     parser.add_argument("--binary", required=True)
     parser.add_argument("--chapter", required=True)
     parser.add_argument("--expect", choices=["pass", "fail"], required=True)
-    parser.add_argument("--seed", default="20261122")
+    parser.add_argument("--seed", required=True)
     args = parser.parse_args()
 
     run = subprocess.run([args.binary, f"[{args.chapter}]", "--reporter", "xml", "--rng-seed", str(args.seed)],

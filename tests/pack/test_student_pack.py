@@ -11,6 +11,9 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "grader"))
 import pack_student  # noqa: E402
 
+sys.path.insert(0, str(ROOT / "tools"))
+import workbook_files  # noqa: E402
+
 SECRET_FOLDERS = ["solutions", "tests/hidden", "tests/mutants", "tests/hostile", "grader"]
 # Answers live in C++: the reference, hidden tests and mutants. (The grader's Python is kept
 # out of the pack by the file-list test; its boilerplate lines prove nothing here.)
@@ -94,8 +97,7 @@ class StudentPackTest(unittest.TestCase):
 
 
 def pack_student_chapters(pack):
-    lines = (pack / "chapters" / "CHAPTERS").read_text().splitlines()
-    return [line.split("#")[0].strip() for line in lines if line.split("#")[0].strip()]
+    return workbook_files.chapters(pack)
 
 
 if __name__ == "__main__":
