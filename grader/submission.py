@@ -3,6 +3,7 @@
 Only the chapter file names (chapters/CHAPTERS ids, '-' as '_', plus .cpp) are ever taken;
 every other file is ignored. Archives are read member by member and never extracted, so a
 path like ../../x or a symlink in an archive cannot write or read outside the grader's folder."""
+import contextlib
 import os
 import pathlib
 import tarfile
@@ -31,11 +32,15 @@ def chapter_files(path, wanted):
     their whole skeleton/ folder). Returns notes about ambiguous or oversized files too."""
     path = pathlib.Path(path)
     if path.is_dir():
-        members = _folder_members(path)
-    elif path.is_file():
-        members = _archive_members(path)
-    else:
-        raise SubmissionError(f"{path} does not exist")
+        return _select(_folder_members(path), wanted)
+    if path.is_file():
+        # The members read lazily from the open archive, so it stays open while choosing.
+        with _open_archive(path) as members:
+            return _select(members, wanted)
+    raise SubmissionError(f"{path} does not exist")
+
+
+def _select(members, wanted):
     found, notes = {}, []
     for name in wanted:
         candidates = sorted((m for m in members if m[0].rsplit("/", 1)[-1] == name and "__MACOSX" not in m[0]),
@@ -73,18 +78,24 @@ def _read_capped(path):
         return file.read(MAX_SOURCE_BYTES + 1)
 
 
-def _archive_members(path):
+@contextlib.contextmanager
+def _open_archive(path):
     lower = path.name.lower()
     try:
         if zipfile.is_zipfile(path):
             archive = zipfile.ZipFile(path)
-            return [(info.filename.strip("/"), info.file_size, lambda info=info: archive.read(info))
-                    for info in archive.infolist() if not info.is_dir()]
-        if lower.endswith((".tar.gz", ".tgz", ".tar")) or tarfile.is_tarfile(path):
+            members = [(info.filename.strip("/"), info.file_size, lambda info=info: archive.read(info))
+                       for info in archive.infolist() if not info.is_dir()]
+        elif lower.endswith((".tar.gz", ".tgz", ".tar")) or tarfile.is_tarfile(path):
             archive = tarfile.open(path)
-            return [(info.name.strip("/").removeprefix("./"), info.size,
-                     lambda info=info: archive.extractfile(info).read(MAX_SOURCE_BYTES + 1))
-                    for info in archive.getmembers() if info.isfile()]
+            members = [(info.name.strip("/").removeprefix("./"), info.size,
+                        lambda info=info: archive.extractfile(info).read(MAX_SOURCE_BYTES + 1))
+                       for info in archive.getmembers() if info.isfile()]
+        else:
+            archive = None
     except (OSError, zipfile.BadZipFile, tarfile.TarError, EOFError) as error:
         raise SubmissionError(f"cannot open the archive {path.name}: {error}") from None
-    raise SubmissionError(f"{path.name} is neither a folder nor a .zip or .tar.gz archive")
+    if archive is None:
+        raise SubmissionError(f"{path.name} is neither a folder nor a .zip or .tar.gz archive")
+    with archive:
+        yield members
