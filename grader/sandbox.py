@@ -18,7 +18,7 @@ Isolation, strongest first:
           afterwards. The code can read any world-readable file, so the grader prints a
           warning.
 """
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import itertools
 import os
 import selectors
@@ -86,11 +86,16 @@ class Sandbox:
         """Runs argv; `readable` folders are visible read-only at their own paths, `writable`
         (one folder) read-write; cwd defaults to `writable`."""
         limits = limits or Limits()
+        uid = self._next_uid() if self.fresh_uids else None
+        if self.mode != "bwrap" and uid is None:
+            # Without a namespace or a uid of its own, RLIMIT_NPROC counts every process and
+            # thread of the grader's user (a desktop session alone has hundreds): the budget
+            # goes on top of what the user already runs, or every compile would fail.
+            limits = replace(limits, processes=limits.processes + _tasks_of(os.getuid()))
         cwd = cwd or writable or "/"
         # Inside bwrap the limits are set after the user namespace exists, so RLIMIT_NPROC
         # counts this sandbox's processes only, not every process of the grader's uid.
         command = self._wrap(_prlimit_prefix(limits) + list(argv), readable, writable, cwd)
-        uid = self._next_uid() if self.fresh_uids else None
         if uid is not None and writable:
             os.chown(writable, uid, uid)
         try:
@@ -142,6 +147,20 @@ def _prlimit_prefix(limits):
 
 
 PRLIMIT = shutil.which("prlimit") or "/usr/bin/prlimit"
+
+
+def _tasks_of(uid):
+    """Processes and threads now running as `uid`: what RLIMIT_NPROC counts."""
+    count = 0
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            if os.stat(f"/proc/{entry}").st_uid == uid:
+                count += len(os.listdir(f"/proc/{entry}/task"))
+        except OSError:
+            continue
+    return count
 
 
 def _supervise(command, cwd, limits, run_as):
