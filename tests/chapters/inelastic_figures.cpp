@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -15,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "csv_table.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
 #include "workbook/time_series.hpp"
@@ -23,6 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using workbook::RigidBody;
+using workbook::testing::CsvTable;
+using workbook::testing::read_csv;
+using workbook::testing::split_csv_line;
 using workbook::Vector3;
 
 constexpr double epsilon = std::numeric_limits<double>::epsilon();
@@ -33,50 +36,6 @@ std::vector<fs::path> scene_files() {
         if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::ranges::sort(files);
     return files;
-}
-
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> fields;
-    std::istringstream in(line);
-    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-    return fields;
-}
-
-/// A CSV read back: the header's column names and every row as numbers.
-struct Table {
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> rows;
-
-    [[nodiscard]] std::vector<double> column(std::string_view name) const {
-        const auto found = std::ranges::find(names, name);
-        REQUIRE(found != names.end());
-        const auto index = static_cast<std::size_t>(found - names.begin());
-        std::vector<double> values;
-        for (const auto& row : rows) values.push_back(row.at(index));
-        return values;
-    }
-};
-
-Table parse_csv(const std::string& text) {
-    std::istringstream in(text);
-    std::string line;
-    Table table;
-    REQUIRE(static_cast<bool>(std::getline(in, line)));
-    table.names = split(line);
-    std::size_t bad_lines = 0;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        bool numbers = true;
-        for (const std::string& field : split(line)) {
-            char* end = nullptr;
-            row.push_back(std::strtod(field.c_str(), &end));
-            numbers = numbers && !field.empty() && *end == '\0';
-        }
-        if (!numbers || row.size() != table.names.size()) ++bad_lines;
-        table.rows.push_back(std::move(row));
-    }
-    REQUIRE(bad_lines == 0);
-    return table;
 }
 
 /// The velocity a body has when the responder sees it in step `step` (1-based): semi-implicit
@@ -113,8 +72,8 @@ TEST_CASE("Every inelastic scene's CSV keeps momentum and loses 1/2 mu |v1 - v2|
             workbook::World world = workbook::make_world(scene, *workbook::find_response_model(scene.responder));
             std::ostringstream csv;
             workbook::write_csv(csv, workbook::run(world, scene.duration));
-            const Table table = parse_csv(csv.str());
-            REQUIRE(table.names == split(workbook::csv_header()));
+            const CsvTable table = read_csv(csv.str());
+            REQUIRE(table.names == split_csv_line(workbook::csv_header()));
             REQUIRE(table.rows.size() == workbook::step_count(scene.duration, scene.settings.time_step) + 1);
 
             const std::vector<double> response = table.column("response_energy_change");

@@ -2,34 +2,26 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_floating_point.hpp>
 
-#include <charconv>
 #include <cstddef>
 #include <limits>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "checks.hpp"
+#include "csv_table.hpp"
 #include "workbook/time_series.hpp"
 
 using namespace workbook;
 using Catch::Matchers::WithinAbs;
+using workbook::testing::parse_csv_number;
+using workbook::testing::split_csv_line;
 
 namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
 const ResponseModel no_response{"none", nullptr, nullptr};
-
-std::vector<std::string> split(const std::string& line, char separator) {
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream in(line);
-    while (std::getline(in, part, separator)) parts.push_back(part);
-    if (!line.empty() && line.back() == separator) parts.emplace_back();
-    return parts;
-}
 
 /// The lines of a text in which every line, the last included, ends with '\n'.
 std::vector<std::string> lines_of(const std::string& text) {
@@ -38,15 +30,6 @@ std::vector<std::string> lines_of(const std::string& text) {
     std::istringstream in(text);
     while (std::getline(in, line)) lines.push_back(line);
     return lines;
-}
-
-/// Parses with from_chars: locale-independent and correctly rounded, so a value written
-/// with max_digits10 digits must come back bit for bit.
-double parse_double(const std::string& text) {
-    double value = std::numeric_limits<double>::quiet_NaN();
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size()) FAIL("not a number: \"" << text << '"');
-    return value;
 }
 
 /// Samples whose values need all 17 significant digits to survive a round trip.
@@ -118,12 +101,12 @@ TEST_CASE("write_csv starts with csv_header() and writes one line per sample", "
     CHECK(lines[0] == csv_header());
     CHECK(out.str().back() == '\n');
 
-    const std::vector<std::string> columns = split(csv_header(), ',');
+    const std::vector<std::string> columns = split_csv_line(csv_header());
     REQUIRE(columns.size() == 13);
     CHECK(columns.front() == "t");
     CHECK(columns[4] == "total");
     CHECK(columns.back() == "contacts");
-    for (std::size_t i = 1; i < lines.size(); ++i) CHECK(split(lines[i], ',').size() == columns.size());
+    for (std::size_t i = 1; i < lines.size(); ++i) CHECK(split_csv_line(lines[i]).size() == columns.size());
 }
 
 TEST_CASE("write_csv values read back bit for bit", "[time_series][csv]") {
@@ -136,7 +119,7 @@ TEST_CASE("write_csv values read back bit for bit", "[time_series][csv]") {
     for (std::size_t i = 0; i < samples.size(); ++i) {
         CAPTURE(i, lines[i + 1]);
         const Probes& p = samples[i];
-        const std::vector<std::string> cells = split(lines[i + 1], ',');
+        const std::vector<std::string> cells = split_csv_line(lines[i + 1]);
         REQUIRE(cells.size() == 13);
         const std::vector<double> expected{p.time,
                                            p.kinetic_linear,
@@ -152,7 +135,7 @@ TEST_CASE("write_csv values read back bit for bit", "[time_series][csv]") {
                                            p.response_energy_change};
         for (std::size_t c = 0; c < expected.size(); ++c) {
             CAPTURE(c, cells[c]);
-            CHECK(parse_double(cells[c]) == expected[c]);
+            CHECK(parse_csv_number(cells[c]) == expected[c]);
         }
         CHECK(cells[12] == std::to_string(p.contacts));
     }
