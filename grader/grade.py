@@ -52,6 +52,7 @@ class Grader:
         self.limits = runner.default_limits(args.time_limit, args.memory_mb)
         self.work_root = tempfile.mkdtemp(prefix="workbook-grade-")
         os.chmod(self.work_root, 0o755)  # the sandboxed user must reach its own folders
+        self.kit = kits.snapshot(kit, self.work_root)
 
     def grade(self, path, name):
         started = time.monotonic()

@@ -1,9 +1,12 @@
 """The grader kit: what the instructor's build left in <build>/grader/kit.json, and the
 test cases of each chapter, listed once from a trusted binary (the untouched skeleton
 linked with the public and hidden tests)."""
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+import itertools
 import json
+import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -101,6 +104,44 @@ def load(build_dir):
     for chapter in chapters:
         chapter.cases = _list_cases(kit, chapter)
     return kit
+
+
+def snapshot(kit, root):
+    """A copy of what compiling and linking a submission reads (headers, objects, libraries
+    not under /usr), world-readable, under `root`; and the kit that points at it.
+
+    The sandboxed compiler and linker then see this copy and nothing of the instructor's
+    tree: no build folder (whose reference objects hold the solution), and no dependence on
+    the tree's permissions. Without namespaces the sandbox runs as a fresh uid, which could
+    not read a tree under a private home folder at all."""
+    root = pathlib.Path(root) / "kit"
+    include_dirs = []
+    for index, folder in enumerate(kit.include_dirs):
+        target = root / f"include{index}"
+        shutil.copytree(folder, target, ignore=_not_headers)
+        include_dirs.append(str(target))
+
+    def copied(path, index):
+        if path.startswith("/usr/"):
+            return path
+        target = root / "objects" / f"{index}-{os.path.basename(path)}"
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(path, target)
+        return str(target)
+
+    counter = itertools.count()
+    libraries = [copied(p, next(counter)) for p in kit.link_libraries]
+    chapters = [replace(c, test_objects=[copied(p, next(counter)) for p in c.test_objects]) for c in kit.chapters]
+    for folder, dirs, files in os.walk(root):
+        os.chmod(folder, 0o755)
+        for name in files:
+            os.chmod(os.path.join(folder, name), 0o644)
+    os.chmod(root.parent, 0o755)
+    return replace(kit, build_dir=root, include_dirs=include_dirs, link_libraries=libraries, chapters=chapters)
+
+
+def _not_headers(folder, names):
+    return [n for n in names if not os.path.isdir(os.path.join(folder, n)) and not n.endswith((".hpp", ".h"))]
 
 
 def _check_chapter_list(kit):
