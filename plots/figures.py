@@ -219,6 +219,8 @@ def main():
                         help="draw only this scene file (repeatable); default: every chapters/<chapter>/scenes/*.json")
     parser.add_argument("--sim", type=Path, default=SOURCE / "build/dev/tools/workbook-sim",
                         help="reference simulator (default: %(default)s)")
+    parser.add_argument("--no-reference", action="store_true",
+                        help="there are no reference solutions (the student edition): draw the student's curves alone")
     parser.add_argument("--student", action="store_true", help="also run the student's simulator and overlay it")
     parser.add_argument("--student-sim", type=Path, default=SOURCE / "build/dev/tools/workbook-sim-student",
                         help="the student's simulator (default: %(default)s)")
@@ -227,9 +229,11 @@ def main():
     scenes = args.scene or sorted((SOURCE / "chapters" / args.chapter / "scenes").glob("*.json"))
     if not scenes:
         sys.exit(f"figures.py: no scenes for chapter '{args.chapter}'")
-    have_reference = args.sim.is_file()
-    if not have_reference and not args.student:
-        sys.exit(f"figures.py: no reference simulator at {args.sim} (use --student to draw your own code)")
+    have_reference = not args.no_reference
+    if args.no_reference and not args.student:
+        sys.exit("figures.py: --no-reference needs --student: without the reference there is only your code to draw")
+    if have_reference and not args.sim.is_file():
+        sys.exit(f"figures.py: no reference simulator at {args.sim} (build it, or pass --no-reference --student)")
     if args.student and not args.student_sim.is_file():
         sys.exit(f"figures.py: no student simulator at {args.student_sim}")
     args.out.mkdir(parents=True, exist_ok=True)
