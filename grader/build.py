@@ -31,20 +31,11 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     if not run.ok or not os.path.isfile(obj):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling"))
     link_cmd = [kit.compiler, *kit.link_flags, "-o", binary, obj, *chapter.test_objects, *kit.link_libraries]
-    run = sandbox.run(link_cmd, readable=[str(kit.build_dir)] + _outside(kit), writable=folder, limits=limits)
+    run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits)
     if not run.ok or not os.path.isfile(binary):
         return Built(None, "did not link", _first_errors(run, kit, folder, "linking"))
     os.chmod(binary, 0o755)
     return Built(binary)
-
-
-def _outside(kit):
-    """Kit files outside the build folder and /usr (rare: a Catch2 built under /opt)."""
-    folders = set()
-    for path in [*kit.link_libraries, *(o for c in kit.chapters for o in c.test_objects)]:
-        if not (path.startswith(str(kit.build_dir) + "/") or path.startswith("/usr/")):
-            folders.add(os.path.dirname(path))
-    return sorted(folders)
 
 
 def limits_for(kit, limits):
@@ -61,12 +52,19 @@ def _first_errors(run, kit, folder, what):
     if run.error:
         return run.error
     text = run.output.decode("utf-8", "replace").replace(folder + "/", "")
-    # The linker names the kit's object files; their paths would tell where hidden tests live.
-    text = re.sub(r"\S*CMakeFiles/\S+\.o\b", "(the tests)", text)
-    text = text.replace(str(kit.build_dir) + "/", "").replace(str(kit.source_dir) + "/", "")
+    # The linker names the kit's object files; they are the tests, nothing the student needs.
+    text = re.sub(r"\S*/objects/\d+-\S+\.o\b", "(the tests)", text)
+    text = text.replace(str(kit.files_dir) + "/", "")
+    text = re.sub(r"\S*tests/\w+/[\w.-]+:\d+:?", "(the tests)", text)
+    missing = sorted(set(re.findall(r"undefined reference to `([^']+)'", text)))
+    if missing:
+        # The raw lines name test files and lines (hidden ones too); the functions are what matters.
+        return ("your file does not define these functions, which the tests call (check the name, the "
+                "namespace and the parameter types against the chapter's header):\n  " + "\n  ".join(missing))
     lines = text.splitlines()
     # Start at the first error; the "In function ..." line before it gives the context.
-    first = next((i for i, line in enumerate(lines) if re.search(r"\berror\b", line)), 0)
+    # ld's "multiple definition" carries no "error".
+    first = next((i for i, line in enumerate(lines) if re.search(r"\berror\b|multiple definition", line)), 0)
     start = first - 1 if first > 0 and lines[first - 1].endswith(":") else first
     shown = lines[start:start + MAX_ERROR_LINES]
     if len(lines) > start + MAX_ERROR_LINES:

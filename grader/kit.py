@@ -79,6 +79,7 @@ class Kit:
     default_seed: int
     chapters: list
     warnings: list = field(default_factory=list)
+    files_dir: pathlib.Path | None = None  # the snapshot the sandbox reads; see snapshot()
 
 
 def load(build_dir):
@@ -117,7 +118,9 @@ def snapshot(kit, root):
     root = pathlib.Path(root) / "kit"
     include_dirs = []
     for index, folder in enumerate(kit.include_dirs):
-        target = root / f"include{index}"
+        # At their place in the tree, so that a compiler error names engine/include/...
+        inside = pathlib.Path(folder).is_relative_to(kit.source_dir)
+        target = root / (pathlib.Path(folder).relative_to(kit.source_dir) if inside else f"include{index}")
         shutil.copytree(folder, target, ignore=_not_headers)
         include_dirs.append(str(target))
 
@@ -137,7 +140,7 @@ def snapshot(kit, root):
         for name in files:
             os.chmod(os.path.join(folder, name), 0o644)
     os.chmod(root.parent, 0o755)
-    return replace(kit, build_dir=root, include_dirs=include_dirs, link_libraries=libraries, chapters=chapters)
+    return replace(kit, files_dir=root, include_dirs=include_dirs, link_libraries=libraries, chapters=chapters)
 
 
 def _not_headers(folder, names):

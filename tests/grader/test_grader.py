@@ -101,6 +101,8 @@ class Batch:
         (broken / source_name(chapters[0])).write_text("#include <vector>\nint broken( {\n")
         (self.subs / "corrupt.zip").write_bytes(b"PK\x03\x04 this is not really a zip")
         self.paths.append(self.subs / "corrupt.zip")
+        unlinked = self._folder("does-not-link", {})  # compiles, but defines none of the functions
+        (unlinked / source_name(chapters[0])).write_text(f'#include "{chapters[0]}.hpp"\n')
         for mutant in sorted((ROOT / "tests" / "mutants").glob("*/*/expect.json")):
             name = f"mutant-{mutant.parent.parent.name}-{mutant.parent.name}"
             self._add_expected(name, mutant.parent, mutant.parent.parent.name)
@@ -231,6 +233,15 @@ class GraderTest(unittest.TestCase):
         self.assertIn("archive", rows["corrupt"]["notes"])
         self.assertEqual(rows["does-not-compile"]["status"], "graded")
         self.assertIn("did not compile", rows["does-not-compile"]["notes"])
+
+    def test_link_errors_name_the_missing_functions_and_no_test_file(self):
+        chapter = chapter_ids()[0]
+        result = self.b.results["does-not-link"]
+        self.assertEqual(result["extra_data"]["chapters"][chapter]["problem"], "did not link")
+        output = result["tests"][0]["output"]
+        self.assertIn("does not define these functions", output)
+        self.assertIn(f"workbook::{chapter.replace('-', '_')}::", output)
+        self.assertNotIn("tests/", output)
 
     def test_results_json_has_gradescope_fields(self):
         for name, result in self.b.results.items():
