@@ -149,15 +149,24 @@ def _prlimit_prefix(limits):
 PRLIMIT = shutil.which("prlimit") or "/usr/bin/prlimit"
 
 
+def _pids_of(uid):
+    """The pids of the processes running as `uid` now (some may be gone when used)."""
+    pids = []
+    for entry in os.listdir("/proc"):
+        try:
+            if entry.isdigit() and os.stat(f"/proc/{entry}").st_uid == uid:
+                pids.append(int(entry))
+        except OSError:
+            continue
+    return pids
+
+
 def _tasks_of(uid):
     """Processes and threads now running as `uid`: what RLIMIT_NPROC counts."""
     count = 0
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
+    for pid in _pids_of(uid):
         try:
-            if os.stat(f"/proc/{entry}").st_uid == uid:
-                count += len(os.listdir(f"/proc/{entry}/task"))
+            count += len(os.listdir(f"/proc/{pid}/task"))
         except OSError:
             continue
     return count
@@ -248,18 +257,14 @@ def _kill_uid(uid):
     (setsid) survive a killpg when there is no pid namespace to tear down. A few passes
     without waiting: a process forking while we kill is bounded by RLIMIT_NPROC."""
     for _ in range(3):
-        found = False
-        for entry in os.listdir("/proc"):
-            if not entry.isdigit():
-                continue
-            try:
-                if os.stat(f"/proc/{entry}").st_uid == uid:
-                    found = True
-                    os.kill(int(entry), signal.SIGKILL)
-            except (FileNotFoundError, ProcessLookupError, PermissionError):
-                continue
-        if not found:
+        pids = _pids_of(uid)
+        if not pids:
             return
+        for pid in pids:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                continue
 
 
 def _probe(sandbox):
