@@ -5,8 +5,8 @@ For every chapters/<chapter>/scenes/*.json this runs the simulator into a CSV an
 figure with two panels, energy over time and momentum over time, as SVG, PDF and PNG beside
 the CSV. The kinetic energy the impact removes is marked with its measured value (the CSV's
 response_energy_change column). With --student the student's simulator is run as well and
-its curves are drawn dashed over the reference's; without a reference simulator (the student
-pack) the student's curves are drawn alone. All looks come from plots/style.gp.
+its curves are drawn dashed over the reference's; with --no-reference (the student edition,
+which has no reference solutions) the student's curves are drawn alone. All looks come from plots/style.gp.
 
     figures.py inelastic build/dev/book/figures/inelastic --sim build/dev/tools/workbook-sim
     figures.py inelastic OUT --student --student-sim build/dev/tools/workbook-sim-student
@@ -45,9 +45,17 @@ def read_csv(path):
     return {name: [float(row[i]) for row in rows[1:]] for i, name in enumerate(rows[0])}
 
 
+# A scene runs in well under a second; a student's endless loop must not hang the figures.
+SCENE_TIME_LIMIT = 120
+
+
 def run_scene(simulator, scene, csv_path):
-    result = subprocess.run([str(simulator), "run", str(scene), "--csv", str(csv_path), "--quiet"],
-                            capture_output=True, text=True)
+    try:
+        result = subprocess.run([str(simulator), "run", str(scene), "--csv", str(csv_path), "--quiet"],
+                                capture_output=True, text=True, timeout=SCENE_TIME_LIMIT)
+    except subprocess.TimeoutExpired:
+        raise RuntimeError(f"{simulator} ran {scene} for more than {SCENE_TIME_LIMIT} s and was stopped "
+                           "(an endless loop in the responder?)") from None
     if result.returncode != 0:
         raise RuntimeError(f"{simulator} failed on {scene}:\n{result.stderr.strip()}")
     return read_csv(csv_path)
