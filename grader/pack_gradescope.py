@@ -24,18 +24,24 @@ import report  # noqa: E402
 import workbook_files  # noqa: E402
 
 SKIP_DIRS = {".git", "build", "out", "grading-results", "__pycache__", ".cache", ".idea", ".vscode"}
-APT_PACKAGES = ("g++ cmake ninja-build python3 bubblewrap util-linux catch2 libfmt-dev nlohmann-json3-dev "
-                "libcli11-dev")
+APT_PACKAGES = ("g++ cmake ninja-build python3 bubblewrap util-linux libfmt-dev nlohmann-json3-dev libcli11-dev")
 
 SETUP_SH = r"""#!/usr/bin/env bash
 # Gradescope runs this once, as root, on a fresh image: install the toolchain and build the
 # grader kit (engine, test support, public and hidden test objects) from the packed tree.
-# Needs an image whose apt has Catch2 3 (Debian bookworm or newer, Ubuntu 24.04 or newer).
+# Needs Catch2 3: Debian bookworm (from bookworm-backports, added here) or newer, or Ubuntu
+# 24.04 or newer.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 export DEBIAN_FRONTEND=noninteractive
+catch2_from=()
+if grep -qs '^VERSION_CODENAME=bookworm' /etc/os-release; then
+  echo 'deb http://deb.debian.org/debian bookworm-backports main' > /etc/apt/sources.list.d/bookworm-backports.list
+  catch2_from=(-t bookworm-backports)
+fi
 apt-get update
 apt-get install -y --no-install-recommends @APT@
+apt-get install -y --no-install-recommends "${catch2_from[@]}" catch2
 BUILD="$HERE/workbook/build/grader"
 cmake -S "$HERE/workbook" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
       -DWORKBOOK_WARNINGS_AS_ERRORS=OFF
