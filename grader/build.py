@@ -1,7 +1,11 @@
-"""Compiles one student file and links it with the kit into one test binary per chapter.
+"""Compiles one student file and links it into the student's process for one chapter: the
+student's object, the chapter's dispatch and the server loop (grader/remote/), the engine.
 
-Both run in the sandbox: the compiler sees only the header folders and the student's file,
-so `#include "../solutions/..."` or an absolute path into tests/hidden finds nothing."""
+Before compiling, the source's includes are checked (only the public headers and the
+submission's own files); after compiling, the symbols the object defines (only the chapter
+header's functions and internal helpers). Compiling, listing symbols and linking run in the
+sandbox, and compiler output is shown only where it speaks of the student's file or a public
+header, so no text from outside the submission reaches the student."""
 import dataclasses
 from dataclasses import dataclass
 import os
@@ -12,28 +16,36 @@ from sandbox import Limits
 COMPILE_LIMITS = Limits(wall_seconds=120, memory_bytes=4 << 30, file_bytes=512 << 20, processes=64,
                         output_bytes=4 << 20)
 MAX_ERROR_LINES = 25
+NM = "/usr/bin/nm"
 
 
 @dataclass
 class Built:
     binary: str | None
-    problem: str | None = None      # "did not compile" / "did not link", for the gradebook
-    feedback: str | None = None     # the compiler's first errors
+    problem: str | None = None      # "did not compile" / "did not link" / "was refused", for the gradebook
+    feedback: str | None = None     # the compiler's first errors, or why the file was refused
 
 
 def build_chapter(kit, sandbox, chapter, source, folder):
     """`source` is the student's file already copied into `folder` (a fresh folder)."""
     obj = os.path.join(folder, chapter.id + ".o")
-    binary = os.path.join(folder, chapter.id + "-tests")
+    binary = os.path.join(folder, chapter.id + "-student")
+    with open(source, "rb") as file:
+        refused = check_source(file.read().decode("utf-8", "replace"), chapter.source)
+    if refused:
+        return Built(None, "was refused", refused)
     limits = limits_for(kit, COMPILE_LIMITS)
     compile_cmd = [kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-c", source, "-o", obj]
     run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits)
     if not run.ok or not os.path.isfile(obj):
-        return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling"))
-    link_cmd = [kit.compiler, *kit.link_flags, "-o", binary, obj, *chapter.test_objects, *kit.link_libraries]
+        return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
+    refused = _check_symbols(sandbox, chapter, obj, folder, limits)
+    if refused:
+        return Built(None, "was refused", refused)
+    link_cmd = [kit.compiler, *kit.link_flags, "-o", binary, obj, *chapter.server_objects, *kit.link_libraries]
     run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits)
     if not run.ok or not os.path.isfile(binary):
-        return Built(None, "did not link", _first_errors(run, kit, folder, "linking"))
+        return Built(None, "did not link", _first_errors(run, kit, folder, "linking", chapter.source))
     os.chmod(binary, 0o755)
     return Built(binary)
 
@@ -44,7 +56,96 @@ def limits_for(kit, limits):
     return dataclasses.replace(limits, address_space_limit=False) if kit.sanitize else limits
 
 
-def _first_errors(run, kit, folder, what):
+# --- Includes -----------------------------------------------------------------------------
+INCLUDE = re.compile(r"^\s*(?:#|%:|\?\?=)\s*include(?:_next)?\b\s*(.*)$")
+HAS_INCLUDE = re.compile(r"__has_include(?:_next)?\s*\(\s*(.*?)\s*\)")
+LITERAL = re.compile(r'^(?:"([^"]*)"|<([^>]*)>)')
+# Assembler and compiler directives that read a file by name.
+READS_FILES = re.compile(r"\.incbin|\.include\b|#\s*pragma\s+GCC\s+dependency|#\s*embed\b|__has_embed", re.IGNORECASE)
+
+
+def check_source(text, name):
+    """Why the file is refused before compiling, or None. Only the public headers and the
+    submission's own files may be included: never an absolute path or one that leaves the
+    submission, never a path built by a macro, and no directive that pulls a file's bytes in."""
+    spliced = re.sub(r"\\\r?\n", "", text)
+    problems = []
+    for number, line in enumerate(spliced.splitlines(), start=1):
+        match = INCLUDE.match(line)
+        paths = []
+        if match:
+            literal = LITERAL.match(match.group(1).strip())
+            if not literal:
+                problems.append(f"line {number}: an #include whose file name is not written out cannot be checked")
+                continue
+            paths.append(literal.group(1) if literal.group(1) is not None else literal.group(2))
+        for argument in HAS_INCLUDE.findall(line):
+            literal = LITERAL.match(argument)
+            paths.append(literal.group(1) if literal and literal.group(1) is not None else
+                         literal.group(2) if literal else "/")
+        for path in paths:
+            why = _outside(path)
+            if why:
+                problems.append(f"line {number}: {path!r} {why}")
+        if READS_FILES.search(line):
+            problems.append(f"line {number}: reads a file into the program ({READS_FILES.search(line).group(0)}), "
+                            "which the grader does not allow")
+    if not problems:
+        return None
+    return (f"your {name} was not compiled: it may include only the standard library, the workbook's public "
+            "headers and files of your own submission.\n  " + "\n  ".join(problems[:5]))
+
+
+def _outside(path):
+    normal = path.replace("\\", "/")
+    if normal.startswith("/") or re.match(r"^[A-Za-z]:", normal) or normal.startswith("~"):
+        return "is an absolute path"
+    if ".." in normal.split("/"):
+        return "leaves your submission (..)"
+    return None
+
+
+# --- Symbols ------------------------------------------------------------------------------
+def _check_symbols(sandbox, chapter, obj, folder, limits):
+    """Why the object is refused, or None: it may define (globally) only the functions of the
+    chapter's header; helpers must be internal (static or in an anonymous namespace). Weak
+    definitions of inline functions and templates are what every file has, except main and
+    the allocation functions."""
+    runs = [sandbox.run([NM, "--defined-only", *flags, obj], readable=[folder], writable=folder, limits=limits)
+            for flags in ([], ["-C"])]
+    if not all(run.ok for run in runs):
+        return "the grader could not list the functions your file defines (nm failed)"
+    raw = runs[0].output.decode("utf-8", "replace").splitlines()
+    readable = runs[1].output.decode("utf-8", "replace").splitlines()
+    refused = []
+    for line, nice in zip(raw, readable):
+        parts, shown = line.split(maxsplit=2), nice.split(maxsplit=2)
+        if len(parts) != 3 or len(shown) != 3:
+            continue
+        kind, mangled, name = parts[1], parts[2], shown[2]
+        if kind.islower() and kind not in ("i", "u", "v", "w"):
+            continue  # local: an internal helper
+        if mangled in chapter.functions:
+            continue
+        special = mangled == "main" or name.startswith(("operator new", "operator delete"))
+        if kind in ("W", "V", "u", "v", "w") and not special:
+            continue  # an inline function or a template instantiation
+        refused.append(name)
+    if not refused:
+        return None
+    allowed = ", ".join(sorted({n.split("(")[0].rsplit("::", 1)[-1] for n in chapter.functions.values()}))
+    return (f"your {chapter.source} was refused: it defines "
+            + ", ".join(f"'{n}'" for n in refused[:5]) + (f" and {len(refused) - 5} more" if len(refused) > 5 else "")
+            + f", which {'is' if len(refused) == 1 else 'are'} not among the functions of the chapter's header "
+            f"({allowed}). Define only those; make your own helpers internal (static, or inside "
+            "namespace { ... }), and never define main, engine or standard-library functions.")
+
+
+# --- Compiler output ----------------------------------------------------------------------
+LOCATED = re.compile(r"^(?:In file included from |\s+from )?([^:\s][^:]*?):\d+(?::\d+)?[:,]")
+
+
+def _first_errors(run, kit, folder, what, source_name):
     if run.timed_out:
         return f"{what} took longer than {COMPILE_LIMITS.wall_seconds:g} s and was stopped"
     if run.flooded:
@@ -52,16 +153,14 @@ def _first_errors(run, kit, folder, what):
     if run.error:
         return run.error
     text = run.output.decode("utf-8", "replace").replace(folder + "/", "")
-    # The linker names the kit's object files; they are the tests, nothing the student needs.
-    text = re.sub(r"\S*/objects/\d+-\S+\.o\b", "(the tests)", text)
+    # The linker names the kit's object files; they are the grader's, nothing the student needs.
+    text = re.sub(r"\S*/objects/\d+-\S+\.o\b", "(the grader's part)", text)
     text = text.replace(str(kit.files_dir) + "/", "")
-    text = re.sub(r"\S*tests/\w+/[\w.-]+:\d+:?", "(the tests)", text)
     missing = sorted(set(re.findall(r"undefined reference to `([^']+)'", text)))
     if missing:
-        # The raw lines name test files and lines (hidden ones too); the functions are what matters.
         return ("your file does not define these functions, which the tests call (check the name, the "
                 "namespace and the parameter types against the chapter's header):\n  " + "\n  ".join(missing))
-    lines = text.splitlines()
+    lines = _only_own_text(text.splitlines(), source_name, kit)
     # Start at the first error; the "In function ..." line before it gives the context.
     # ld's "multiple definition" carries no "error".
     first = next((i for i, line in enumerate(lines) if re.search(r"\berror\b|multiple definition", line)), 0)
@@ -72,3 +171,32 @@ def _first_errors(run, kit, folder, what):
     if run.signal:
         shown.append(f"(the {'compiler' if what == 'compiling' else 'linker'} was stopped by signal {run.signal})")
     return "\n".join(shown) or f"{what} failed with status {run.returncode}"
+
+
+def _only_own_text(lines, source_name, kit):
+    """The compiler's lines, without any that speak of (and so may quote) a file outside the
+    submission and the public headers: a diagnostic located elsewhere is replaced by one line."""
+    public = [os.path.relpath(d, kit.files_dir) + "/" if kit.files_dir and d.startswith(str(kit.files_dir)) else d + "/"
+              for d in kit.include_dirs]
+
+    def allowed(path):
+        return path == source_name or path.startswith(tuple(public)) or path.startswith("/usr/")
+
+    kept, hiding = [], False
+    for line in lines:
+        located = LOCATED.match(line)
+        if located or line.startswith(("{standard input}", "/tmp/")):
+            hiding = not (located and allowed(located.group(1)))
+            if hiding:
+                if not kept or kept[-1] != HIDDEN:
+                    kept.append(HIDDEN)
+                continue
+        elif hiding and (line.startswith(" ") or not line.strip()):
+            continue  # the quoted source and caret lines of a hidden diagnostic
+        else:
+            hiding = False
+        kept.append(line)
+    return kept
+
+
+HIDDEN = "(a message about a file outside your submission, not shown)"

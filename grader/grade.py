@@ -7,11 +7,14 @@ A submission is a folder, .zip or .tar.gz holding the student's copies of skelet
 Writes OUT/<submission>/results.json (Gradescope's format) and summary.txt, and
 OUT/gradebook.csv with one row per submission. See grader/README.md."""
 import argparse
+from concurrent.futures import ThreadPoolExecutor
+import json
 import os
 import pathlib
 import shutil
 import sys
 import tempfile
+import threading
 import time
 import traceback
 
@@ -37,7 +40,11 @@ def parse_args(argv):
     parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per test case (default 1024)")
     parser.add_argument("--hidden-visibility", choices=report.VISIBILITIES, default="after_published",
                         help="Gradescope visibility of hidden tests (default after_published)")
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="test cases run in parallel")
+    parser.add_argument("-j", "--jobs", type=int, default=1, help="submissions graded at once (default 1)")
+    parser.add_argument("--case-jobs", type=int, default=os.cpu_count() or 1,
+                        help="test cases of one submission run at once (default: the number of CPUs)")
+    parser.add_argument("--resume", action="store_true",
+                        help="keep the results of submissions already graded into --out (after an interruption)")
     parser.add_argument("--no-bwrap", action="store_true", help="do not use bubblewrap (weaker isolation)")
     parser.add_argument("--results-json", help="also copy the (single) submission's results.json here (Gradescope)")
     parser.add_argument("--keep-work", action="store_true", help="keep the build folders (printed) for debugging")
@@ -58,7 +65,7 @@ class Grader:
         started = time.monotonic()
         result = report.SubmissionResult(name, str(path))
         work = tempfile.mkdtemp(prefix=f"{_safe(name)}-", dir=self.work_root)
-        os.chmod(work, 0o755)
+        os.chmod(work, 0o711)  # reachable by this submission's runs, not listable by another's
         try:
             self._grade_into(result, path, work)
         except submissions.SubmissionError as error:
@@ -98,7 +105,7 @@ class Grader:
             scratch = os.path.join(work, "runs")
             os.makedirs(scratch, exist_ok=True)
             outcomes = runner.run_chapter(self.kit, self.sandbox, chapter, built.binary, scratch, self.seed,
-                                          self.limits, self.args.jobs)
+                                          self.limits, self.args.case_jobs)
             result.chapters.append(report.ChapterResult(chapter, outcomes, source=origin))
 
     def close(self):
@@ -125,14 +132,43 @@ def unique_names(paths):
     return names
 
 
+def expand(paths):
+    """The submissions the command line names: a folder holding no chapter file of its own but
+    only folders and archives (an LMS export unpacked, say) is a folder of submissions. A
+    missing path, or an empty folder given alone, is refused before anything is graded."""
+    found = []
+    for given in paths:
+        path = pathlib.Path(given)
+        if not path.exists():
+            raise submissions.SubmissionError(f"{given}: no such file or folder")
+        if path.is_dir():
+            entries = sorted(p for p in path.iterdir() if not p.name.startswith(".") and p.name != "__MACOSX")
+            if not entries and len(paths) == 1:
+                # Alone it is a mistake on the command line; in a batch, a student's empty hand-in (a row of zeros).
+                raise submissions.SubmissionError(f"{given}: the folder is empty, there is nothing to grade")
+            holds_sources = any(p.is_file() and p.suffix in (".cpp", ".hpp", ".h") for p in entries)
+            if not holds_sources and len(entries) > 1 and all(
+                    p.is_dir() or p.name.lower().endswith(submissions.SUFFIXES) for p in entries):
+                found += [str(p) for p in entries]
+                continue
+        found.append(given)
+    return found
+
+
 def main(argv=None):
     args = parse_args(argv if argv is not None else sys.argv[1:])
+    try:
+        args.submissions = expand(args.submissions)
+    except submissions.SubmissionError as error:
+        print(f"grade: {error}", file=sys.stderr)
+        return 2
     try:
         kit = kits.load(args.build_dir)
     except kits.KitError as error:
         print(f"grade: {error}", file=sys.stderr)
         return 2
-    sandbox = sandboxes.detect(allow_bwrap=not args.no_bwrap)
+    # WORKBOOK_NO_BWRAP=1 is --no-bwrap for scripts that cannot pass options (the Gradescope test).
+    sandbox = sandboxes.detect(allow_bwrap=not args.no_bwrap and os.environ.get("WORKBOOK_NO_BWRAP") != "1")
     grader = Grader(kit, sandbox, args)
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -140,24 +176,49 @@ def main(argv=None):
           f"({report.fmt_points(sum(c.max_score for c in kit.chapters))} points), random seed {grader.seed}, "
           f"time limit {args.time_limit:g} s per test case.", flush=True)
     print(f"Isolation: {sandbox.description}.", flush=True)
+    exposed = kits.exposed_secrets(kit) if sandbox.mode != "bwrap" else []
+    if exposed:
+        kit.warnings.append(f"student code can read {', '.join(exposed)} (readable by every user): make the tree "
+                            f"unreadable to others (chmod -R go-rwx {kit.source_dir}), as setup.sh does on Gradescope")
     for warning in ([sandbox.warning] if sandbox.warning else []) + kit.warnings:
         print(f"WARNING: {warning}" if not warning.startswith("WARNING") else warning, file=sys.stderr, flush=True)
 
-    results = []
     names = unique_names(args.submissions)
     gradebook = out / "gradebook.csv"
-    try:
-        for index, (path, name) in enumerate(zip(args.submissions, names), start=1):
-            result = grader.grade(path, name)
-            results.append(result)
+    rows = {}  # by name; written in the order given, whatever order they finish in
+    if args.resume:
+        for name in names:
+            try:
+                rows[name] = json.loads((out / name / "row.json").read_text())
+            except (OSError, ValueError):
+                continue
+        if rows:
+            print(f"Resuming: {len(rows)} submission(s) already graded in {out}.", flush=True)
+    todo = [(path, name) for path, name in zip(args.submissions, names) if name not in rows]
+    done = len(rows)
+    lock = threading.Lock()
+
+    def one(path_name):
+        nonlocal done
+        path, name = path_name
+        result = grader.grade(path, name)
+        with lock:
             _write(out / name, result, grader, sandbox, args)
-            report.write_gradebook(gradebook, results, kit.chapters)
-            print(report.progress_line(index, len(names), result), flush=True)
+            rows[name] = report.gradebook_row(result, kit.chapters)
+            report.write_json(out / name / "row.json", rows[name])
+            report.write_gradebook(gradebook, [rows[n] for n in names if n in rows], kit.chapters)
+            done += 1
+            print(report.progress_line(done, len(names), result), flush=True)
             if not args.quiet and len(names) == 1:
                 print(report.summary(result), flush=True)
+
+    try:
+        with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+            list(pool.map(one, todo))
+        report.write_gradebook(gradebook, [rows[n] for n in names if n in rows], kit.chapters)
     finally:
         grader.close()
-    if args.results_json and results:
+    if args.results_json and rows:
         os.makedirs(os.path.dirname(os.path.abspath(args.results_json)), exist_ok=True)
         shutil.copyfile(out / names[0] / "results.json", args.results_json)
     print(f"Gradebook: {gradebook}  (results.json per submission in {out}/<name>/)", flush=True)

@@ -1,6 +1,6 @@
 """The grader kit: what the instructor's build left in <build>/grader/kit.json, and the
-test cases of each chapter, listed once from a trusted binary (the untouched skeleton
-linked with the public and hidden tests)."""
+test cases of each chapter, listed once from its trusted checker (the public and hidden
+tests linked with stand-ins that forward each call to the student's process)."""
 from dataclasses import dataclass, field, replace
 import itertools
 import json
@@ -45,9 +45,14 @@ class Chapter:
     id: str
     source: str            # the student's file name, e.g. linear_impulse.cpp
     skeleton: pathlib.Path
-    lister: pathlib.Path
-    test_objects: list
+    checker: pathlib.Path     # trusted: tests + stand-ins, never loads student code
+    server_objects: list      # linked with the student's object into the student's process
     cases: list = field(default_factory=list)
+    functions: dict = field(default_factory=dict)  # {mangled symbol: readable name} of the header's functions
+
+    @property
+    def namespace(self):
+        return "workbook::" + self.source.removesuffix(".cpp")
 
     @property
     def title(self):
@@ -90,21 +95,70 @@ def load(build_dir):
         data = json.loads(path.read_text())
     except (OSError, ValueError) as error:
         raise KitError(f"cannot read {path}: {error}") from None
+    if data.get("format") != 2:
+        raise KitError(f"{path} is from an older grader: rebuild the kit (cmake --build --preset dev --target grader_kit)")
     chapters = [Chapter(number, entry["id"], entry["source"], pathlib.Path(entry["skeleton"]),
-                        pathlib.Path(entry["lister"]), entry["test_objects"])
+                        pathlib.Path(entry["checker"]), entry["server_objects"])
                 for number, entry in enumerate(data["chapters"], start=1)]
     kit = Kit(path, pathlib.Path(data["source_dir"]), pathlib.Path(data["build_dir"]), data["compiler"],
               data["compile_flags"], data["link_flags"], data["include_dirs"], data["link_libraries"],
               bool(data.get("sanitize")), int(data["default_seed"]), chapters)
     missing = [str(p) for p in [kit.compiler, *kit.link_libraries, *kit.include_dirs]
-               + [p for c in chapters for p in (c.lister, c.skeleton, *c.test_objects)] if not pathlib.Path(p).exists()]
+               + [p for c in chapters for p in (c.checker, c.skeleton, *c.server_objects)] if not pathlib.Path(p).exists()]
     if missing:
         raise KitError(f"the grader kit in {path.parent} is incomplete (missing {missing[0]}"
                        f"{f' and {len(missing) - 1} more' if len(missing) > 1 else ''}): rebuild it")
     _check_chapter_list(kit)
     for chapter in chapters:
         chapter.cases = _list_cases(kit, chapter)
+        chapter.functions = _chapter_functions(chapter)
     return kit
+
+
+def defined_symbols(path, nm="nm"):
+    """[(type letter, mangled, readable)] of the symbols an object or binary defines."""
+    runs = [subprocess.run([nm, "--defined-only", *flags, str(path)], capture_output=True, text=True, timeout=60,
+                           stdin=subprocess.DEVNULL) for flags in ([], ["-C"])]
+    if any(run.returncode != 0 for run in runs):
+        raise OSError(f"nm cannot read {path}: {runs[0].stderr.strip()[:300]}")
+    rows = []
+    for raw, readable in zip(runs[0].stdout.splitlines(), runs[1].stdout.splitlines()):
+        parts = raw.split(maxsplit=2)
+        nice = readable.split(maxsplit=2)
+        if len(parts) == 3 and len(nice) == 3:
+            rows.append((parts[1], parts[2], nice[2]))
+    return rows
+
+
+def _chapter_functions(chapter):
+    """The functions a submission may define: the stand-ins the checker defines, which are
+    exactly the chapter header's functions (grader/remote/<file>.cpp)."""
+    try:
+        rows = defined_symbols(chapter.checker)
+    except (OSError, subprocess.TimeoutExpired) as error:
+        raise KitError(f"cannot list the functions of {chapter.id}: {error}") from None
+    functions = {mangled: readable for kind, mangled, readable in rows
+                 if kind == "T" and readable.startswith(chapter.namespace + "::")}
+    if not functions:
+        raise KitError(f"the checker of {chapter.id} defines no function of {chapter.namespace}: "
+                       f"see grader/remote/{chapter.source}")
+    return functions
+
+
+def exposed_secrets(kit):
+    """The secret folders (solutions, hidden tests, the kit's build) a user other than the
+    grader's could read: without bubblewrap only permissions keep them from student code."""
+    def readable_by_others(path):
+        path = pathlib.Path(path)
+        if not path.exists():
+            return False
+        for folder in [*reversed(path.parents), path]:
+            mode = folder.stat().st_mode
+            if folder != path and not mode & 0o001:
+                return False
+        return bool(path.stat().st_mode & 0o004)
+    candidates = [kit.source_dir / "solutions", kit.source_dir / "tests" / "hidden", kit.build_dir]
+    return [str(p) for p in candidates if readable_by_others(p)]
 
 
 def snapshot(kit, root):
@@ -112,8 +166,9 @@ def snapshot(kit, root):
     not under /usr), world-readable, under `root`; and the kit that points at it.
 
     The sandboxed compiler and linker then see this copy and nothing of the instructor's
-    tree: no build folder (whose reference objects hold the solution), and no dependence on
-    the tree's permissions. Without namespaces the sandbox runs as a fresh uid, which could
+    tree: no build folder (whose reference objects hold the solution), no test objects (the
+    student's process links only the engine and the server loop), and no dependence on the
+    tree's permissions. Without namespaces the sandbox runs as a fresh uid, which could
     not read a tree under a private home folder at all."""
     root = pathlib.Path(root) / "kit"
     include_dirs = []
@@ -134,7 +189,7 @@ def snapshot(kit, root):
 
     counter = itertools.count()
     libraries = [copied(p, next(counter)) for p in kit.link_libraries]
-    chapters = [replace(c, test_objects=[copied(p, next(counter)) for p in c.test_objects]) for c in kit.chapters]
+    chapters = [replace(c, server_objects=[copied(p, next(counter)) for p in c.server_objects]) for c in kit.chapters]
     for folder, dirs, files in os.walk(root):
         os.chmod(folder, 0o755)
         for name in files:
@@ -159,11 +214,11 @@ def _check_chapter_list(kit):
 
 def _list_cases(kit, chapter):
     try:
-        run = subprocess.run([str(chapter.lister), f"[{chapter.id}]", "--list-tests", "-r", "xml"],
+        run = subprocess.run([str(chapter.checker), f"[{chapter.id}]", "--list-tests", "-r", "xml"],
                              capture_output=True, timeout=60, stdin=subprocess.DEVNULL)
         root = ElementTree.fromstring(run.stdout)
     except (OSError, subprocess.TimeoutExpired, ElementTree.ParseError) as error:
-        raise KitError(f"cannot list the test cases of {chapter.id} from {chapter.lister}: {error}") from None
+        raise KitError(f"cannot list the test cases of {chapter.id} from {chapter.checker}: {error}") from None
     cases = []
     hidden_dir = "/tests/hidden/"
     for order, node in enumerate(root.iter("TestCase")):

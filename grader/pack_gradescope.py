@@ -5,8 +5,9 @@
 
 Layout: setup.sh and run_autograder at the root, the instructor's tree (minus .git and
 build folders) under workbook/. Gradescope unpacks it to /autograder/source, runs setup.sh
-once to build the grader kit, then run_autograder per submission, which grades
-/autograder/submission into /autograder/results/results.json.
+from there once to build the grader kit, copies run_autograder to /autograder/run_autograder
+and runs it from /autograder per submission; it grades /autograder/submission into
+/autograder/results/results.json.
 
 For tests, run_autograder honours AUTOGRADER_ROOT (instead of /autograder) and
 WORKBOOK_KIT_BUILD_DIR (an already built kit, instead of the one setup.sh builds)."""
@@ -24,43 +25,61 @@ import report  # noqa: E402
 import workbook_files  # noqa: E402
 
 SKIP_DIRS = {".git", "build", "out", "grading-results", "__pycache__", ".cache", ".idea", ".vscode"}
-APT_PACKAGES = ("g++ cmake ninja-build python3 bubblewrap util-linux libfmt-dev nlohmann-json3-dev libcli11-dev")
+APT_PACKAGES = ("g++ cmake ninja-build python3 binutils bubblewrap util-linux libfmt-dev nlohmann-json3-dev libcli11-dev")
 
 SETUP_SH = r"""#!/usr/bin/env bash
-# Gradescope runs this once, as root, on a fresh image: install the toolchain and build the
-# grader kit (engine, test support, public and hidden test objects) from the packed tree.
-# Needs Catch2 3: Debian bookworm (from bookworm-backports, added here) or newer, or Ubuntu
-# 24.04 or newer.
+# Gradescope runs this once, as root, from <root>/source (normally /autograder/source) on a
+# fresh image: install what is missing, build the grader kit (engine, public and hidden test
+# checkers) from the packed tree, and put the tree out of reach of student code.
+# Needs Catch2 3: Debian 12 bookworm (from bookworm-backports) or Ubuntu 24.04 or newer.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 export DEBIAN_FRONTEND=noninteractive
-catch2_from=()
-if grep -qs '^VERSION_CODENAME=bookworm' /etc/os-release; then
-  echo 'deb http://deb.debian.org/debian bookworm-backports main' > /etc/apt/sources.list.d/bookworm-backports.list
-  catch2_from=(-t bookworm-backports)
+PACKAGES=(@APT@)
+missing=()
+for package in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}\n' "$package" 2>/dev/null | grep -q '^install ok installed' || missing+=("$package")
+done
+catch2_version="$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)"
+if [ "${#missing[@]}" -gt 0 ] || [[ "$catch2_version" != 3.* ]]; then
+  catch2_from=()
+  if grep -qs '^VERSION_CODENAME=bookworm' /etc/os-release; then
+    # bookworm's own Catch2 is 2.13. Add bookworm-backports only where no package source names
+    # it yet: a second entry for the same suite makes apt warn on every call.
+    if ! grep -rqs 'bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+      echo 'deb http://deb.debian.org/debian bookworm-backports main' > /etc/apt/sources.list.d/workbook-bookworm-backports.list
+    fi
+    catch2_from=(-t bookworm-backports)
+  fi
+  apt-get update
+  if [ "${#missing[@]}" -gt 0 ]; then apt-get install -y --no-install-recommends "${missing[@]}"; fi
+  if [[ "$catch2_version" != 3.* ]]; then apt-get install -y --no-install-recommends "${catch2_from[@]}" catch2; fi
 fi
-apt-get update
-apt-get install -y --no-install-recommends @APT@
-apt-get install -y --no-install-recommends "${catch2_from[@]}" catch2
 BUILD="$HERE/workbook/build/grader"
 cmake -S "$HERE/workbook" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
       -DWORKBOOK_WARNINGS_AS_ERRORS=OFF
 cmake --build "$BUILD" --target grader_kit
 test -f "$BUILD/grader/kit.json"
+# Gradescope's containers cannot run bubblewrap, so student code runs as fresh unprivileged
+# uids: the tree (solutions, hidden tests, the kit's sources and build) must be unreadable
+# to them. The grader copies what a student's compile needs (public headers, the engine).
+chmod -R go-rwx "$HERE"
 echo "grader kit ready in $BUILD"
 """
 
 RUN_AUTOGRADER = r"""#!/usr/bin/env bash
-# Gradescope runs this once per submission. It must always leave a results.json behind.
+# Gradescope copies this script to <root>/run_autograder (normally /autograder/run_autograder)
+# and runs it from <root>, once per submission; the kit stays where setup.sh built it, in
+# <root>/source. It must always leave <root>/results/results.json behind.
 set -uo pipefail
 ROOT="${AUTOGRADER_ROOT:-/autograder}"
-HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-BUILD="${WORKBOOK_KIT_BUILD_DIR:-$HERE/workbook/build/grader}"
+SOURCE="$ROOT/source"
+BUILD="${WORKBOOK_KIT_BUILD_DIR:-$SOURCE/workbook/build/grader}"
 RESULTS="$ROOT/results/results.json"
 mkdir -p "$ROOT/results"
 rm -f "$RESULTS"
 WORK="$(mktemp -d)"
-python3 "$HERE/workbook/grader/grade.py" --build-dir "$BUILD" --out "$WORK" --results-json "$RESULTS" \
+python3 "$SOURCE/workbook/grader/grade.py" --build-dir "$BUILD" --out "$WORK" --results-json "$RESULTS" \
         --seed @SEED@ --time-limit @TIME@ --hidden-visibility @VISIBILITY@ "$ROOT/submission"
 status=$?
 if [ ! -s "$RESULTS" ]; then

@@ -25,6 +25,8 @@ EXCLUDED = {
     "tests/grader": "the grader's own tests",
     "tests/pack": "this test of the pack, which reads the solutions",
     "tests/chapters": "checks of the texts and figures against the reference",
+    "tests/check": "the test of ./workbook check's runner, with a deliberately broken responder",
+    "tests/site": "the browser test of the instructor's site",
     "grader": "the instructor's grader",
     ".ci": "the workbook's own CI",
 }

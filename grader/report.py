@@ -161,8 +161,13 @@ def progress_line(index, count, result):
     return f"[{index}/{count}] {result.name} {status}{tail}  {result.seconds:.1f} s"
 
 
+def step_column(chapter, step):
+    return f"{chapter.id} step {step[0]}"
+
+
 def gradebook_columns(chapters):
-    return ["submission", *[c.id for c in chapters], "total", "max", "status", "notes"]
+    steps = [step_column(c, step) for c in chapters for step in c.steps()]
+    return ["submission", *[c.id for c in chapters], *steps, "total", "max", "status", "notes"]
 
 
 def gradebook_row(result, chapters):
@@ -171,6 +176,9 @@ def gradebook_row(result, chapters):
     for chapter in chapters:
         ch = by_id.get(chapter.id)
         row[chapter.id] = fmt_points(ch.score if ch else 0.0)
+        scores = {step: score for step, score, _, _ in ch.step_scores()} if ch else {}
+        for step in chapter.steps():
+            row[step_column(chapter, step)] = fmt_points(scores.get(step, 0.0))
     row["total"] = fmt_points(result.score)
     row["max"] = fmt_points(sum(c.max_score for c in chapters))
     row["status"] = "error" if result.error else "graded"
@@ -181,14 +189,16 @@ def gradebook_row(result, chapters):
     return row
 
 
-def write_gradebook(path, results, chapters):
-    """Rewritten after every submission, atomically, so an interrupted batch keeps every finished row."""
+def write_gradebook(path, rows, chapters):
+    """Rewritten after every submission, atomically, so an interrupted batch keeps every
+    finished row. `rows` are gradebook_row() dicts (kept beside each results.json as row.json,
+    which is how --resume takes over a finished submission)."""
     temporary = f"{path}.tmp"
     with open(temporary, "w", newline="", encoding="utf-8") as file:
-        writer = csv.DictWriter(file, fieldnames=gradebook_columns(chapters))
+        writer = csv.DictWriter(file, fieldnames=gradebook_columns(chapters), extrasaction="ignore")
         writer.writeheader()
-        for result in results:
-            writer.writerow(gradebook_row(result, chapters))
+        for row in rows:
+            writer.writerow(row)
     os.replace(temporary, path)
 
 

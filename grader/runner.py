@@ -1,13 +1,20 @@
-"""Runs each test case of a chapter in its own sandboxed process and decides pass or fail.
+"""Runs each test case of a chapter as two processes and decides pass or fail.
 
-A test case passes only when its process exited with status 0 within the limits AND the XML
-report file it wrote names exactly that test case as passed. The report is read from a file,
-never from stdout, so text the student prints (even an imitation of a report) counts for
-nothing; stdout is kept only to show the student what their code printed."""
+The trusted checker (the chapter's tests linked with stand-ins, see grader/remote/) runs
+the test case; every call of a chapter function goes through a pipe to the student's
+process (the student's object and a server loop), which runs sandboxed and only computes.
+A test case passes only when the checker exited with status 0 and the XML report it wrote
+(into a folder the student's process cannot write) names exactly that test case as passed.
+The student's process can change that only through the numbers it answers; what it prints
+is shown to the student, and how it ended (crash, exit, time or output limit) explains a
+failure."""
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 import os
 import signal as signals
+import subprocess
+import tempfile
+import threading
 
 from build import limits_for
 import catch_xml
@@ -40,6 +47,11 @@ def escape_test_name(name):
     return "".join("\\" + c if c in SPEC_SPECIAL else c for c in name)
 
 
+# The checker itself is trusted and quick; this only bounds a grader bug or a wedged pipe.
+CHECKER_EXTRA_SECONDS = 30
+MAX_REPORT_BYTES = 8 << 20
+
+
 def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs):
     """{test case name: Outcome} for every test case of the chapter."""
     limits = limits_for(kit, limits)
@@ -51,7 +63,7 @@ def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs)
         os.makedirs(scratch)
         sandbox.prepare_writable(scratch)
         try:
-            return case.name, run_case(sandbox, binary, folder, case, scratch, seed, limits)
+            return case.name, run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits)
         except Exception as error:  # a grader bug must cost this case, not the batch
             return case.name, Outcome(False, f"the grader could not run this test: {error}")
 
@@ -59,16 +71,77 @@ def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs)
         return dict(pool.map(one, enumerate(chapter.cases)))
 
 
-def run_case(sandbox, binary, folder, case, scratch, seed, limits):
-    report = os.path.join(scratch, "report.xml")
-    argv = [binary, escape_test_name(case.name), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
-    run = sandbox.run(argv, readable=[folder], writable=scratch, limits=limits)
-    printed = _printed(run.output, run.output_total)
-    return Outcome(*judge(run, _read_report(report, case.name), limits, printed))
+def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
+    calls_read, calls_write = os.pipe()
+    answers_read, answers_write = os.pipe()
+    # Anonymous pipes cannot be reached by name; the mode lets the student's fresh uid reopen
+    # its own end as /dev/fd/N (a pipe belongs to the uid that made it).
+    os.fchmod(answers_write, 0o666)
+    student = {}
+
+    def serve():
+        student["run"] = sandbox.run([binary, f"/dev/fd/{answers_write}"], readable=[folder], writable=scratch,
+                                     limits=limits, stdin_fd=calls_read, pass_fds=(answers_write,))
+
+    # The grader keeps a reader of the answers until the end, so that the student's process
+    # can always open its end, even when the checker is already gone.
+    keep_answers_open = os.dup(answers_read)
+    server = threading.Thread(target=serve, daemon=True)
+    server.start()
+    try:
+        with tempfile.TemporaryDirectory(prefix="checker-") as private:  # 0700: the student cannot write the report
+            report = os.path.join(private, "report.xml")
+            checker = _run_checker(chapter, case, report, seed, limits, calls_write, answers_read)
+            verdict = _read_report(report, case.name)
+        server.join()
+    finally:
+        os.close(keep_answers_open)
+    run = student.get("run")
+    # The student's file is compiled in this folder; its path means nothing to the student.
+    printed = _printed(run.output, run.output_total).replace(folder + "/", "") if run else ""
+    return Outcome(*judge(checker, verdict, run, limits, printed))
 
 
-def judge(run, case, limits, printed):
-    """(passed, feedback) from how the process ended and what its report says."""
+def _run_checker(chapter, case, report, seed, limits, calls_write, answers_read):
+    """Runs the trusted checker on one test case; its standard output carries the calls and
+    its standard input the answers. Returns (returncode or None, problem text or None)."""
+    argv = [str(chapter.checker), escape_test_name(case.name), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
+    env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "WORKBOOK_REMOTE_CHANNEL": "stdio"}
+    try:
+        # restore_signals=False keeps SIGPIPE ignored: a write to a dead student process is an
+        # error the stand-in reports, not the checker's death.
+        process = subprocess.Popen(argv, stdin=answers_read, stdout=calls_write, stderr=subprocess.DEVNULL,
+                                   env=env, restore_signals=False, close_fds=True)
+    except OSError as error:
+        return None, f"could not start the checker: {error}"
+    finally:
+        os.close(answers_read)
+        os.close(calls_write)
+    try:
+        return process.wait(timeout=limits.wall_seconds + CHECKER_EXTRA_SECONDS), None
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+        return None, "the grader's checker did not finish"
+
+
+def judge(checker, case, student, limits, printed):
+    """(passed, feedback): the verdict is the checker's alone; how the student's process
+    ended only explains a failure."""
+    returncode, problem = checker
+    if case is not None and case.passed and returncode == 0:
+        return True, ""
+    run = student
+    if run is None:
+        return False, f"the grader could not run this test: {problem or 'the student process did not run'}"
+    gone = case is None or any(remote_gone_marker in f for f in case.failures)
+    if not gone and not (run.timed_out or run.flooded or run.disk_full or run.signal is not None or run.error):
+        if run.returncode not in (0, None):
+            gone = True
+    if not gone:
+        if problem:
+            return False, f"the grader could not finish this test ({problem}){printed}"
+        return False, _failures(case).lstrip("\n") + printed
     if run.error:
         return False, f"the test could not be started: {run.error}"
     if run.timed_out:
@@ -77,22 +150,23 @@ def judge(run, case, limits, printed):
     if run.flooded:
         return False, (f"your code printed more than {limits.output_bytes // 1024} KiB of output, so the test "
                        f"was stopped{printed}")
+    if run.disk_full:
+        return False, (f"your code wrote more than {limits.disk_bytes >> 20} MiB to disk, so the test was "
+                       f"stopped{printed}")
     if run.signal is not None:
         reason = SIGNAL_NAMES.get(run.signal, "")
         name = _signal_name(run.signal)
-        detail = _failures(case) if case is not None and case.failures else ""
         return False, (f"your code crashed with signal {run.signal} ({name}{': ' + reason if reason else ''})"
-                       f"{detail}{printed}")
-    if case is None:
-        if run.returncode == 0:
-            return False, ("your program exited early with status 0 before the test finished (does your code call "
-                           f"exit()?){printed}")
-        return False, f"your program ended with status {run.returncode} before the test finished{printed}"
-    if case.passed and run.returncode == 0:
-        return True, ""
-    if case.passed:
-        return False, f"the test passed but your program then ended with status {run.returncode}{printed}"
-    return False, _failures(case).lstrip("\n") + printed
+                       f"{printed}")
+    if run.returncode == 0:
+        return False, ("your program exited early with status 0 before the test finished (does your code call "
+                       f"exit()?){printed}")
+    if "Sanitizer" in printed:  # sanitizer kits (the workbook's own CI) stop at the first bad access
+        return False, f"your code crashed: the sanitizer found undefined behaviour or a bad memory access{printed}"
+    return False, f"your program ended with status {run.returncode} before the test finished{printed}"
+
+
+remote_gone_marker = "[workbook-remote: your code's process ended]"
 
 
 def _read_report(path, name):
@@ -131,5 +205,5 @@ def _signal_name(number):
         return f"signal {number}"
 
 
-def default_limits(time_limit, memory_mb):
-    return Limits(wall_seconds=time_limit, memory_bytes=memory_mb << 20)
+def default_limits(time_limit, memory_mb, disk_mb=64):
+    return Limits(wall_seconds=time_limit, memory_bytes=memory_mb << 20, disk_bytes=disk_mb << 20)

@@ -41,6 +41,7 @@ class Limits:
     output_bytes: int = 1 << 20          # more output than this is a flood: the run is stopped
     keep_output_bytes: int = 64 << 10    # how much of stdout+stderr is kept for feedback
     address_space_limit: bool = True
+    disk_bytes: int | None = None        # total the command may leave in its writable folder
 
 
 @dataclass
@@ -49,6 +50,7 @@ class RunResult:
     signal: int | None = None
     timed_out: bool = False
     flooded: bool = False
+    disk_full: bool = False              # wrote more than disk_bytes into its writable folder
     output: bytes = b""
     output_total: int = 0
     seconds: float = 0.0
@@ -56,7 +58,8 @@ class RunResult:
 
     @property
     def ok(self):
-        return self.error is None and not self.timed_out and not self.flooded and self.returncode == 0
+        return (self.error is None and not self.timed_out and not self.flooded and not self.disk_full
+                and self.returncode == 0)
 
 
 @dataclass
@@ -82,9 +85,11 @@ class Sandbox:
     def _next_uid(self):
         return FRESH_UID_BASE + (os.getpid() % 100_000) * 10_000 + next(_counter) % 10_000
 
-    def run(self, argv, *, readable=(), writable=None, cwd=None, limits=None, stdin_data=None):
+    def run(self, argv, *, readable=(), writable=None, cwd=None, limits=None, stdin_fd=None, pass_fds=()):
         """Runs argv; `readable` folders are visible read-only at their own paths, `writable`
-        (one folder) read-write; cwd defaults to `writable`."""
+        (one folder) read-write; cwd defaults to `writable`. `stdin_fd` becomes its standard
+        input and `pass_fds` stay open in it at their numbers; both are handed over: closed
+        here once the command has started (so that its end of a pipe is its alone)."""
         limits = limits or Limits()
         uid = self._next_uid() if self.fresh_uids else None
         if self.mode != "bwrap" and uid is None:
@@ -99,7 +104,8 @@ class Sandbox:
         if uid is not None and writable:
             os.chown(writable, uid, uid)
         try:
-            return _supervise(command, cwd if self.mode != "bwrap" else "/", limits, uid)
+            return _supervise(command, cwd if self.mode != "bwrap" else "/", limits, uid, stdin_fd, pass_fds,
+                              watch=writable if limits.disk_bytes else None)
         finally:
             if uid is not None:
                 _kill_uid(uid)
@@ -172,19 +178,35 @@ def _tasks_of(uid):
     return count
 
 
-def _supervise(command, cwd, limits, run_as):
+def _disk_used(folder):
+    used = 0
+    for root, dirs, files in os.walk(folder):
+        for name in files + dirs:
+            try:
+                used += os.lstat(os.path.join(root, name)).st_blocks * 512
+            except OSError:
+                continue
+    return used
+
+
+def _supervise(command, cwd, limits, run_as, stdin_fd=None, pass_fds=(), watch=None):
     """Starts the command in its own session, keeps at most keep_output_bytes of its output,
     and kills the whole process group on timeout or flood. Never blocks past the deadline."""
     result = RunResult()
     start = time.monotonic()
     env = {"PATH": SAFE_PATH, "LANG": "C.UTF-8", "HOME": "/tmp"}
     try:
-        process = subprocess.Popen(command, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                   stderr=subprocess.STDOUT, start_new_session=True, close_fds=True,
+        process = subprocess.Popen(command, cwd=cwd, env=env,
+                                   stdin=subprocess.DEVNULL if stdin_fd is None else stdin_fd,
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True,
+                                   close_fds=True, pass_fds=tuple(pass_fds),
                                    user=run_as, group=run_as, extra_groups=[] if run_as is not None else None)
     except OSError as error:
         result.error = f"could not start {command[0]}: {error}"
         return result
+    finally:
+        for handed in ([stdin_fd] if stdin_fd is not None else []) + list(pass_fds):
+            os.close(handed)
     kept = bytearray()
     deadline = start + limits.wall_seconds
     selector = selectors.DefaultSelector()
@@ -197,7 +219,10 @@ def _supervise(command, cwd, limits, run_as):
             if remaining <= 0:
                 result.timed_out = process.poll() is None
                 break
-            for _ in selector.select(timeout=min(remaining, 0.5)):
+            if watch and _disk_used(watch) > limits.disk_bytes:
+                result.disk_full = True
+                break
+            for _ in selector.select(timeout=min(remaining, 0.1 if watch else 0.5)):
                 chunk = os.read(descriptor, 65536)
                 if not chunk:
                     open_pipe = False
@@ -209,7 +234,7 @@ def _supervise(command, cwd, limits, run_as):
                     result.flooded = True
                     open_pipe = False
                     break
-        if result.timed_out or result.flooded:
+        if result.timed_out or result.flooded or result.disk_full:
             _kill_group(process)
         # The pipe is closed (or we gave up on it); the process itself must end soon.
         try:

@@ -4,12 +4,19 @@ Only the chapter file names (chapters/CHAPTERS ids, '-' as '_', plus .cpp) are e
 every other file is ignored. Archives are read member by member and never extracted, so a
 path like ../../x or a symlink in an archive cannot write or read outside the grader's folder."""
 import contextlib
+import gzip
+import io
 import os
 import pathlib
 import tarfile
+import time
 import zipfile
 
 MAX_SOURCE_BYTES = 1 << 20   # a chapter file larger than this is not a hand-written solution
+# Reading a tar archive decompresses it whole; a gzip bomb must be refused within seconds.
+MAX_ARCHIVE_BYTES = 64 << 20
+MAX_ARCHIVE_SECONDS = 10.0
+MAX_MEMBERS = 10_000
 SUFFIXES = (".tar.gz", ".tgz", ".zip", ".tar")
 
 
@@ -87,15 +94,61 @@ def _open_archive(path):
             members = [(info.filename.strip("/"), info.file_size, lambda info=info: archive.read(info))
                        for info in archive.infolist() if not info.is_dir()]
         elif lower.endswith((".tar.gz", ".tgz", ".tar")) or tarfile.is_tarfile(path):
-            archive = tarfile.open(path)
-            members = [(info.name.strip("/").removeprefix("./"), info.size,
-                        lambda info=info: archive.extractfile(info).read(MAX_SOURCE_BYTES + 1))
-                       for info in archive.getmembers() if info.isfile()]
+            archive, members = _read_tar(path)
         else:
             archive = None
     except (OSError, zipfile.BadZipFile, tarfile.TarError, EOFError) as error:
         raise SubmissionError(f"cannot open the archive {path.name}: {error}") from None
+    if archive is not None and len(members) > MAX_MEMBERS:
+        if hasattr(archive, "close"):
+            archive.close()
+        raise SubmissionError(f"the archive {path.name} holds more than {MAX_MEMBERS} files: refused")
     if archive is None:
         raise SubmissionError(f"{path.name} is neither a folder nor a .zip or .tar.gz archive")
     with archive:
         yield members
+
+
+class _Bounded(io.RawIOBase):
+    """A read-only stream that stops with a SubmissionError once more than MAX_ARCHIVE_BYTES
+    came out of it or MAX_ARCHIVE_SECONDS went by, whatever the archive's headers claim."""
+
+    def __init__(self, stream, name):
+        self.stream, self.name, self.count = stream, name, 0
+        self.deadline = time.monotonic() + MAX_ARCHIVE_SECONDS
+
+    def readable(self):
+        return True
+
+    def readinto(self, buffer):
+        if self.count > MAX_ARCHIVE_BYTES:
+            raise SubmissionError(f"the archive {self.name} expands to more than {MAX_ARCHIVE_BYTES >> 20} MiB: "
+                                  "refused (hand in only your source files)")
+        if time.monotonic() > self.deadline:
+            raise SubmissionError(f"reading the archive {self.name} took longer than {MAX_ARCHIVE_SECONDS:g} s: refused")
+        data = self.stream.read(min(len(buffer), 1 << 16))
+        buffer[:len(data)] = data
+        self.count += len(data)
+        return len(data)
+
+
+def _read_tar(path):
+    """Every regular file of a tar or tar.gz, each read in full once (they are small: the
+    whole archive is bounded), so nothing is decompressed twice."""
+    with open(path, "rb") as raw:
+        compressed = raw.read(2) == b"\x1f\x8b"
+    source = gzip.open(path, "rb") if compressed else open(path, "rb")
+    bounded = io.BufferedReader(_Bounded(source, path.name))
+    members = []
+    try:
+        with tarfile.open(fileobj=bounded, mode="r|") as archive:
+            for info in archive:
+                if not info.isfile():
+                    continue
+                data = archive.extractfile(info).read(MAX_SOURCE_BYTES + 1)
+                members.append((info.name.strip("/").removeprefix("./"), info.size, lambda data=data: data))
+                if len(members) > MAX_MEMBERS:
+                    break
+    finally:
+        source.close()
+    return contextlib.nullcontext(), members

@@ -21,6 +21,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+import families
+
 PLOTS = Path(__file__).resolve().parent
 SOURCE = PLOTS.parent
 STYLE = PLOTS / "style.gp"
@@ -33,7 +35,14 @@ ANGULAR = [("angular_momentum_x", "L_x", 21), ("angular_momentum_y", "L_y", 22),
 
 # What the measured energy change at impact should equal, per responder; the figure states it
 # next to the measured value. A responder missing here gets the measured value alone.
-LOSS_LAW = {"inelastic": "−½ μ |v₁ − v₂|²"}
+LOSS_LAW = {"inelastic": "−½ μ |v₁ − v₂|²", "projection": "0: positions only",
+            "linear-impulse": "−½ μ (1 − e²) (v₁₂·n)²"}
+LOSS_LAW["angular-impulse"] = "½ (1 − e) Σ Jᵢ uᵢ"  # u_i < 0: each pushing point i approached at u_i
+
+# Responders whose figures get a third panel, the deepest penetration per step (the CSV's
+# penetration_max), because what they change is positions.
+DEPTH_PANEL = {"projection"}
+DEPTH = ("penetration_max", "deepest penetration", 41)
 
 FORMATS = ["svg", "pdf", "png"]
 
@@ -56,9 +65,32 @@ def run_scene(simulator, scene, csv_path):
     except subprocess.TimeoutExpired:
         raise RuntimeError(f"{simulator} ran {scene} for more than {SCENE_TIME_LIMIT} s and was stopped "
                            "(an endless loop in the responder?)") from None
-    if result.returncode != 0:
+    # Status 3: the world stopped on a NaN or an infinity (workbook/guards.hpp) and wrote the
+    # samples up to there; the figure draws what is finite and marks where it stopped.
+    if result.returncode == 3 and Path(csv_path).is_file():
+        print(f"figures: note: {Path(scene).name}: {result.stderr.strip()}", flush=True)
+    elif result.returncode != 0:
         raise RuntimeError(f"{simulator} failed on {scene}:\n{result.stderr.strip()}")
     return read_csv(csv_path)
+
+
+def first_nonfinite(data):
+    """Index of the first sample holding a value that is not finite (NaN, infinite), or None.
+    A student's responder can produce one; everything before it is still worth drawing."""
+    columns = list(data.values())
+    for i in range(len(columns[0])):
+        if any(not math.isfinite(column[i]) for column in columns):
+            return i
+    return None
+
+
+def finite_prefix(csv_path, data, stop, scratch):
+    """(path, data) of the samples before `stop`, for gnuplot, which cannot read 'nan'; the
+    CSV written beside the figure keeps every sample, the non-finite ones too."""
+    lines = Path(csv_path).read_text().splitlines(keepends=True)
+    path = Path(scratch, Path(csv_path).stem + ".finite.csv")
+    path.write_text("".join(lines[:1 + stop]))
+    return path, {name: column[:stop] for name, column in data.items()}
 
 
 def largest(datasets, columns):
@@ -126,12 +158,19 @@ def curves(datasets, series, factor, axes=""):
     return clauses
 
 
-def gnuplot_panels(title, responder, datasets, reference, student):
-    """The multiplot body (everything after `set output`) for one scene."""
+def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=()):
+    """The multiplot body (everything after `set output`) for one scene. `stops` lists
+    (whose curves, time) where a run's values stopped being finite: marked on both panels."""
     main = (reference or student)[1]
     everything = [d for _, d, _, _ in datasets]
-    t_end = main["t"][-1]
     hit = impact(main)
+    stop_marks = []
+    for n, (who, t_stop) in enumerate(stops):
+        stop_marks += [f"set arrow {5 + n} from {t_stop!r}, graph 0 to {t_stop!r}, graph 1 nohead dt 2 lw 2 lc rgb c_drop",
+                       f"set label {5 + n} \"{who}: not finite (NaN)\\nfrom t = {t_stop:.4g} s on\" at {t_stop!r}, "
+                       f"graph {0.25 - 0.08 * n!r} "
+                       f"{'left offset character 0.6' if t_stop < 0.6 * t_end else 'right offset character -0.6'}, 0 "
+                       "font note_font tc rgb c_drop noenhanced"]
 
     e_scale = largest(everything, [c for c, _, _, _ in ENERGY])
     p_scale = largest(everything, [c for c, _, _ in MOMENTUM])
@@ -146,7 +185,8 @@ def gnuplot_panels(title, responder, datasets, reference, student):
     e_lo, e_hi = axis_range([e_factor * v for d in everything for c, _, _ in energy for v in d[c]], top_room=0.55)
     p_lo, p_hi = axis_range([p_factor * v for d in everything for c, _, _ in momentum for v in d[c]])
 
-    g = [f"set multiplot layout 1,2 title {quote(title)} font title_font noenhanced",
+    depth_panel = responder in DEPTH_PANEL
+    g = [f"set multiplot layout 1,{3 if depth_panel else 2} title {quote(title)} font title_font noenhanced",
          f"set xrange [0:{t_end!r}]", f"set xtics 0, {tick_step(t_end)!r}", "set format x '%g'",
          "set xlabel 't / s'"]
     if hit is not None:
@@ -154,6 +194,7 @@ def gnuplot_panels(title, responder, datasets, reference, student):
         impact_label = f"set label 1 'impact' at {t_hit!r}, graph 0.97 offset character 0.6, 0 left font note_font tc rgb c_note"
         g += [f"set arrow 1 from {t_hit!r}, graph 0 to {t_hit!r}, graph 1 @impact_style", impact_label]
 
+    g += stop_marks
     # Energy panel, with the drop at impact marked and labelled by its measured value.
     g += ["set title 'Energy'", f"set ylabel 'E / {e_unit}'", f"set yrange [{e_lo!r}:{e_hi!r}]"]
     if hit is not None:
@@ -161,7 +202,7 @@ def gnuplot_panels(title, responder, datasets, reference, student):
         before = main["total"][hit - 1] * e_factor
         after = before + drop * e_factor
         t_arrow = t_hit + 0.012 * t_end  # just right of the step, so that the curve does not hide it
-        if drop != 0.0:
+        if drop != 0.0 and math.isfinite(before) and math.isfinite(after):
             g.append(f"set arrow 2 from {t_arrow!r}, {before!r} to {t_arrow!r}, {after!r} @drop_style")
         if reference:
             law = LOSS_LAW.get(responder)
@@ -171,7 +212,10 @@ def gnuplot_panels(title, responder, datasets, reference, student):
         if reference and student:
             s_hit = impact(student[1])
             s_drop = student[1]["response_energy_change"][s_hit] if s_hit is not None else 0.0
-            lines.append(f"your code: ΔE = {number(s_drop * e_factor, e_unit)}")
+            if any(who == "your code" for who, _ in stops) and s_hit is None:
+                lines.append("your code: ΔE not finite (NaN)")
+            else:
+                lines.append(f"your code: ΔE = {number(s_drop * e_factor, e_unit)}")
         # In the free strip above the curves, beside the impact line on the side with more room.
         right = t_hit < 0.6 * t_end
         for n, text in enumerate(lines):
@@ -184,6 +228,7 @@ def gnuplot_panels(title, responder, datasets, reference, student):
     g += ["plot " + ", \\\n     ".join(plot), "unset arrow 2", "unset label"]
     if hit is not None:
         g.append(impact_label)  # the energy labels are gone, the impact keeps its own
+    g += [line for line in stop_marks if line.startswith("set label")]
 
     # Momentum panel: linear momentum on the left axis, angular momentum (if any) on the right.
     g += ["set title 'Momentum'", f"set ylabel 'p / ({p_unit})'", f"set yrange [{p_lo!r}:{p_hi!r}]"]
@@ -197,19 +242,117 @@ def gnuplot_panels(title, responder, datasets, reference, student):
         plot += curves(datasets, [(c, t + " (right)", s) for c, t, s in angular], l_factor, "axes x1y2 ")
     if reference and student:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g += ["plot " + ", \\\n     ".join(plot), "unset multiplot"]
+    g += ["plot " + ", \\\n     ".join(plot)]
+
+    # Penetration panel: the deepest contact of each step as detected, before correction.
+    if depth_panel:
+        d_lo, d_hi = axis_range([1000.0 * v for d in everything for v in d[DEPTH[0]]])
+        g += ["unset y2label", "unset y2tics", "unset my2tics", "set border 3", "set title 'Penetration'",
+              "set ylabel 'depth / mm'", f"set yrange [{d_lo!r}:{d_hi!r}]"]
+        plot = curves(datasets, [DEPTH[:3]], 1000.0)
+        if reference and student:
+            plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
+        g += ["plot " + ", \\\n     ".join(plot)]
+    g.append("unset multiplot")
     return "\n".join(g)
 
 
-def draw(scene, out_dir, stem, reference, student):
-    """Writes stem.svg, stem.pdf and stem.png for one scene."""
+def sweep_panel(title, runs, dt):
+    """One panel: the deepest penetration against the step number, one curve per fraction.
+    `runs` is a list of (fraction, csv path, data, dashed, titled)."""
+    everything = [d for _, _, d, _, _ in runs]
+    steps = len(everything[0]["t"]) - 1
+    d_lo, d_hi = axis_range([1000.0 * v for d in everything for v in d[DEPTH[0]]], top_room=0.06)
+    g = [f"set title {quote(title)} font title_font noenhanced", f"set xrange [0:{steps}]",
+         f"set xtics 0, {tick_step(steps)!r}", "set format x '%g'", "set xlabel 'step k'",
+         "set ylabel 'deepest penetration / mm'", f"set yrange [{d_lo!r}:{d_hi!r}]",
+         "set key outside right center vertical Left reverse"]
+    plot = []
+    for n, (fraction, path, data, dashed, titled) in enumerate(runs):
+        column = list(data).index(DEPTH[0]) + 1
+        clause = f"'{path}' skip 1 using ($1/{dt!r}):(${column}*1000.0) with linespoints ls {31 + n % 6} pt 7 ps 0.5"
+        clause += " dt student_dash" if dashed else ""
+        clause += f" title {quote(f'β = {fraction:g}')}" if titled else " notitle"
+        plot.append(clause)
+    if any(run[3] for run in runs):
+        plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
+    g.append("plot " + ", \\\n     ".join(plot))
+    return "\n".join(g)
+
+
+def run_sweep(simulator, scene, fractions, out_dir, stem):
+    """Runs `scene` once per fraction of its sweep; returns [(fraction, csv path, data)]."""
     description = json.loads(scene.read_text())
-    title, responder = description["title"], description["responder"]
+    runs = []
+    for n, fraction in enumerate(fractions):
+        variant = dict(description)
+        variant.pop("sweep")
+        variant["position_correction"] = dict(description.get("position_correction", {}), fraction=fraction)
+        scene_path = Path(out_dir, f"{stem}.run-{n}.json")
+        csv_path = Path(out_dir, f"{stem}.run-{n}.csv")
+        scene_path.write_text(json.dumps(variant))
+        try:
+            runs.append((fraction, csv_path, run_scene(simulator, scene_path, csv_path)))
+        finally:
+            scene_path.unlink()
+    return runs
+
+
+def draw_sweep(scene, out_dir, stem, reference_sim, student_sim):
+    """A scene with a "sweep": one figure of depth against step, one curve per fraction, and
+    one CSV beside it (the step and every run's deepest penetration, m)."""
+    description = json.loads(scene.read_text())
+    fractions, dt = description["sweep"]["fraction"], description["time_step"]
+    runs = []
+    if reference_sim:
+        runs += [(f, p, d, False, True) for f, p, d in run_sweep(reference_sim, scene, fractions, out_dir, stem)]
+    if student_sim:
+        runs += [(f, p, d, bool(reference_sim), not reference_sim)
+                 for f, p, d in run_sweep(student_sim, scene, fractions, out_dir, stem + ".yours")]
+    title = description["title"] + ("" if reference_sim else " (your code)")
+    body = sweep_panel(title, runs, dt)
+    script = []
+    for ext in FORMATS:
+        script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
+                   f"set output {quote(str(out_dir / (stem + '.' + ext)))}", body, "unset output"]
+    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+    try:
+        if result.returncode != 0 or result.stderr.strip():
+            raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+        with open(out_dir / (stem + ".csv"), "w", newline="") as f:
+            writer = csv.writer(f)
+            writer.writerow(["step"] + [f"penetration_max_beta_{fr:g}" + ("_yours" if dashed or not reference_sim else "")
+                                        for fr, _, _, dashed, _ in runs])
+            for k in range(len(runs[0][2]["t"])):
+                writer.writerow([k] + [repr(d[DEPTH[0]][k]) for _, _, d, _, _ in runs])
+    finally:
+        for _, path, _, _, _ in runs:
+            path.unlink()
+
+
+def draw(scene, out_dir, stem, reference, student, scratch):
+    """Writes stem.svg, stem.pdf and stem.png for one scene. Values that stop being finite
+    end their curves, with a mark on the figure and a note on stdout; returns those notes."""
+    description = json.loads(scene.read_text())
+    title, responder = description.get("title", scene.stem), description.get("responder", "")
     if student and not reference:
         title += " (your code)"
+    t_end = (reference or student)[1]["t"][-1]
+    stops, notes = [], []
+    runs = {"reference": reference, "your code": student}
+    for who, run in list(runs.items()):
+        stop = first_nonfinite(run[1]) if run else None
+        if stop is None:
+            continue
+        t_stop = run[1]["t"][stop]
+        stops.append((who, t_stop))
+        notes.append(f"{scene.name}: the values of {who} stop being finite (NaN or infinite) at t = {t_stop:.6g} s; "
+                     f"the curves end there, marked on the figure (the CSV keeps every sample)")
+        runs[who] = finite_prefix(run[0], run[1], max(stop, 1), scratch)
+    reference, student = runs["reference"], runs["your code"]
     datasets = ([(reference[0], reference[1], False, True)] if reference else []) + \
                ([(student[0], student[1], bool(reference), not reference)] if student else [])
-    body = gnuplot_panels(title, responder, datasets, reference, student)
+    body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops)
     script = []
     for ext in FORMATS:
         script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
@@ -217,6 +360,40 @@ def draw(scene, out_dir, stem, reference, student):
     result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
     if result.returncode != 0 or result.stderr.strip():
         raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+    return notes
+
+
+def draw_families(args, have_reference, scratch):
+    """The chapter's family figures (plots/families.py); returns the number of failures."""
+    failures = 0
+    for family in families.FAMILIES.get(args.chapter, []):
+        stem = family["name"] + (".student" if args.student else "")
+        print(f"figures: {args.chapter}/{family['name']} (family) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
+        try:
+            runs, student_runs = {}, {}
+            for member in families.members(family):
+                scene = families.scene_path(SOURCE, member)
+                name = member.replace("/", "--")
+                if have_reference:
+                    path = Path(scratch, name + ".csv")
+                    runs[member] = (path, run_scene(args.sim, scene, path))
+                # Other chapters' overlays are the reference's alone.
+                if args.student and member.split("/")[0] == args.chapter:
+                    path = Path(scratch, name + ".student.csv")
+                    student_runs[member] = (path, run_scene(args.student_sim, scene, path))
+            body = families.body(family, runs, student_runs, SOURCE, scratch)
+            families.write_csv(family, runs, student_runs, scratch, args.out / (stem + ".csv"))
+            script = []
+            for ext in FORMATS:
+                script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
+                           f"set output {quote(str(args.out / (stem + '.' + ext)))}", body, "unset output"]
+            result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+            if result.returncode != 0 or result.stderr.strip():
+                raise RuntimeError(f"gnuplot on {family['name']}:\n{result.stderr.strip()}")
+        except (RuntimeError, OSError, ValueError, KeyError, StopIteration) as error:
+            print(f"figures: error: {error}", file=sys.stderr)
+            failures += 1
+    return failures
 
 
 def main():
@@ -230,12 +407,14 @@ def main():
     parser.add_argument("--no-reference", action="store_true",
                         help="there are no reference solutions (the student edition): draw the student's curves alone")
     parser.add_argument("--student", action="store_true", help="also run the student's simulator and overlay it")
+    parser.add_argument("--families", action="store_true",
+                        help="draw the chapter's family figures (plots/families.py) instead of one figure per scene")
     parser.add_argument("--student-sim", type=Path, default=SOURCE / "build/dev/tools/workbook-sim-student",
                         help="the student's simulator (default: %(default)s)")
     args = parser.parse_args()
 
     scenes = args.scene or sorted((SOURCE / "chapters" / args.chapter / "scenes").glob("*.json"))
-    if not scenes:
+    if not scenes and not args.families:
         sys.exit(f"figures.py: no scenes for chapter '{args.chapter}'")
     have_reference = not args.no_reference
     if args.no_reference and not args.student:
@@ -248,11 +427,17 @@ def main():
 
     failures = 0
     with tempfile.TemporaryDirectory() as scratch:
+        if args.families:
+            sys.exit(1 if draw_families(args, have_reference, scratch) else 0)
         for scene in scenes:
             stem = scene.stem + (".student" if args.student else "")
             what = ("your code over the reference" if have_reference else "your code") if args.student else "reference"
             print(f"figures: {args.chapter}/{scene.name} ({what}) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
             try:
+                if "sweep" in json.loads(scene.read_text()):
+                    draw_sweep(scene, args.out, stem, args.sim if have_reference else None,
+                               args.student_sim if args.student else None)
+                    continue
                 reference = student = None
                 if have_reference:
                     path = Path(scratch, scene.stem + ".csv") if args.student else args.out / (stem + ".csv")
@@ -260,7 +445,8 @@ def main():
                 if args.student:
                     path = args.out / (stem + ".csv")
                     student = (path, run_scene(args.student_sim, scene, path))
-                draw(scene, args.out, stem, reference, student)
+                for note in draw(scene, args.out, stem, reference, student, scratch):
+                    print(f"figures: note: {note}", flush=True)
             except (RuntimeError, OSError, ValueError, KeyError) as error:
                 print(f"figures: error: {error}", file=sys.stderr)
                 failures += 1

@@ -45,9 +45,42 @@ set style line 13 lc rgb c_green lw 2.5
 set style line 21 lc rgb c_purple lw 2.5
 set style line 22 lc rgb c_sky lw 2.5
 set style line 23 lc rgb c_yellow lw 2.5
+# deepest penetration (the third panel of a position corrector's figures)
+set style line 41 lc rgb c_vermillion lw 2.5
+# one curve per value of a sweep (depth against step for several fractions beta)
+set style line 31 lc rgb c_blue lw 2
+set style line 32 lc rgb c_sky lw 2
+set style line 33 lc rgb c_green lw 2
+set style line 34 lc rgb c_orange lw 2
+set style line 35 lc rgb c_purple lw 2
+set style line 36 lc rgb c_vermillion lw 2
 # key entries that explain the dashes
 set style line 90 lc rgb "#303030" lw 2.5
 
 student_dash = 2              # dash type of the student's curves in an overlay
 impact_style = "nohead dt 3 lw 1.5 lc rgb c_note"
 drop_style = "heads size screen 0.008,25 filled lw 2.5 lc rgb c_drop"
+
+# ---- Families: figures that compare several runs (plots/families.py) ------------------------
+# one colour per member (e.g. per coefficient of restitution), in the order listed
+set style line 61 lc rgb c_vermillion lw 2.5
+set style line 62 lc rgb c_orange lw 2.5
+set style line 63 lc rgb c_green lw 2.5
+set style line 64 lc rgb c_blue lw 2.5
+# another chapter's model on the same scene, drawn over a member
+set style line 65 lc rgb "#303030" lw 2 dt 3
+# measured points, and the closed form they are compared with
+set style line 71 lc rgb c_blue lw 2 pt 7 ps 1.1
+set style line 72 lc rgb c_total lw 4
+set style line 73 lc rgb c_vermillion lw 2 pt 5 ps 1.1
+# ---- Animations (plots/animate.py): 16:9 video frames, 1280x720, type big enough for a hall --
+use_video = "set terminal pngcairo size 1280,720 enhanced font 'DejaVu Sans,20' linewidth 1.6 background rgb 'white';" \
+          . "title_font = ',24'; label_font = ',20'; note_font = ',18'"
+
+# ---- Strips of panels (plots/compare.py): the same fonts on a 4:3 canvas ---------------------
+use_strip_svg = "set terminal svg size 1200,900 dynamic enhanced font 'DejaVu Sans,15' linewidth 1.2 background rgb 'white';" \
+              . "title_font = ',18'; label_font = ',14'; note_font = ',13'"
+use_strip_png = "set terminal pngcairo size 1800,1350 enhanced font 'DejaVu Sans,21' linewidth 1.8 background rgb 'white';" \
+              . "title_font = ',25'; label_font = ',19.5'; note_font = ',18'"
+use_strip_pdf = "set terminal pdfcairo size 24cm,18cm enhanced font 'DejaVu Sans,12' linewidth 1.2;" \
+              . "title_font = ',14.5'; label_font = ',11'; note_font = ',10.5'"

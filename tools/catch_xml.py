@@ -66,3 +66,25 @@ def parse(xml_text):
         passed = result is not None and result.get("success") == "true" and not failures
         cases.append(CaseResult(case.get("name", ""), parse_tags(case.get("tags")), passed, failures))
     return cases
+
+
+# Characters Catch2's test-spec parser treats specially; a backslash makes them literal.
+SPEC_SPECIAL = set('\\,[]"*~^&#')
+
+
+def escape_test_name(name):
+    """A test case name as a Catch2 test spec that matches exactly that case."""
+    return "".join("\\" + c if c in SPEC_SPECIAL else c for c in name)
+
+
+def parse_listing(xml_text):
+    """[(name, tags)] of `--list-tests --reporter xml`, in the order Catch2 lists them;
+    raises ValueError when the text is not such a listing."""
+    try:
+        root = ElementTree.fromstring(xml_text)
+    except ElementTree.ParseError as error:
+        raise ValueError(f"not a Catch2 test listing: {error}") from None
+    if root.tag != "MatchingTests":
+        raise ValueError(f"not a Catch2 test listing: root element <{root.tag}>")
+    return [((case.findtext("Name") or "").strip(), parse_tags(case.findtext("Tags")))
+            for case in root.iter("TestCase")]

@@ -2,8 +2,8 @@
 /// \file
 /// Chapter 1, perfectly inelastic collision: the functions the student writes.
 ///
-/// This one declaration is shared by skeleton/inelastic.cpp (the student's copy) and
-/// solutions/inelastic.cpp (the reference), so the two can never disagree on a signature.
+/// This one declaration is shared by skeleton/inelastic.cpp (the student's copy) and the
+/// reference solution, so the two can never disagree on a signature.
 
 #include "workbook/contact.hpp"
 #include "workbook/rigid_body.hpp"

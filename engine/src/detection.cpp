@@ -2,55 +2,118 @@
 
 #include <utility>
 
+#include "workbook/box_detection.hpp"
+#include "workbook/broad_phase.hpp"
+
 namespace workbook {
 
-std::optional<Contact> collide_spheres(const RigidBody& sphere1, const RigidBody& sphere2) {
+namespace {
+
+// Each shape pair has one yes/no test and one writer. The writer repeats the test's
+// arithmetic (the same expressions, so the same bits) instead of receiving it, which keeps
+// overlaps() free of any state and the writer callable on its own.
+
+bool spheres_overlap(const RigidBody& sphere1, const RigidBody& sphere2) {
+    const double radii = sphere1.shape.radius + sphere2.shape.radius;
+    // Written as "not apart" so that a NaN position still yields a (NaN) contact, as it always
+    // has: a broken state shows in the contacts instead of vanishing from them.
+    return !(length_squared(sphere1.position - sphere2.position) >= radii * radii);
+}
+
+void write_spheres(const RigidBody& sphere1, const RigidBody& sphere2, Contact& contact) {
     const Vector3 offset = sphere1.position - sphere2.position;
     const double radii = sphere1.shape.radius + sphere2.shape.radius;
-    const double distance_squared = length_squared(offset);
-    if (distance_squared >= radii * radii) return std::nullopt;
-
-    const double distance = std::sqrt(distance_squared);
-    Contact contact;
+    const double distance = std::sqrt(length_squared(offset));
     contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
     const double overlap = radii - distance;
     // The point halfway between the two deepest surface points, so neither body is favoured.
     const Vector3 point = sphere2.position + contact.normal * (sphere2.shape.radius - overlap / 2.0);
     contact.add_point(point, overlap);
+}
+
+/// Whether a pair with a box can touch at all: its bounding sphere (workbook::bounding_radius)
+/// reaches the other body's, or the plane. Conservative; the box test decides.
+bool bounding_spheres_may_touch(const RigidBody& a, const RigidBody& b) {
+    if (a.shape.kind == ShapeKind::plane) return bounding_spheres_may_touch(b, a);
+    if (b.shape.kind == ShapeKind::plane) {
+        const Vector3 normal = rotate(b.orientation, b.shape.normal);
+        return !(dot(a.position - b.position, normal) > bounding_radius(a));
+    }
+    const double reach = bounding_radius(a) + bounding_radius(b);
+    return !(length_squared(a.position - b.position) > reach * reach);
+}
+
+/// Height of the sphere's centre above the plane, and the plane's world normal.
+struct PlaneHeight {
+    Vector3 normal;
+    double height;
+};
+
+PlaneHeight height_above(const RigidBody& sphere, const RigidBody& plane) {
+    const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
+    return {normal, dot(sphere.position - plane.position, normal)};
+}
+
+bool sphere_plane_overlap(const RigidBody& sphere, const RigidBody& plane) {
+    return !(sphere.shape.radius - height_above(sphere, plane).height <= 0.0);
+}
+
+void write_sphere_plane(const RigidBody& sphere, const RigidBody& plane, Contact& contact) {
+    const auto [normal, height] = height_above(sphere, plane);
+    contact.normal = normal;
+    const Vector3 point = sphere.position - normal * ((sphere.shape.radius + height) / 2.0);
+    contact.add_point(point, sphere.shape.radius - height);
+}
+
+}  // namespace
+
+std::optional<Contact> collide_spheres(const RigidBody& sphere1, const RigidBody& sphere2) {
+    if (!spheres_overlap(sphere1, sphere2)) return std::nullopt;
+    Contact contact;
+    write_spheres(sphere1, sphere2, contact);
     return contact;
 }
 
 std::optional<Contact> collide_sphere_plane(const RigidBody& sphere, const RigidBody& plane) {
-    const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
-    const double height = dot(sphere.position - plane.position, normal);
-    const double overlap = sphere.shape.radius - height;
-    if (overlap <= 0.0) return std::nullopt;
-
+    if (!sphere_plane_overlap(sphere, plane)) return std::nullopt;
     Contact contact;
-    contact.normal = normal;
-    const Vector3 point = sphere.position - normal * ((sphere.shape.radius + height) / 2.0);
-    contact.add_point(point, overlap);
+    write_sphere_plane(sphere, plane, contact);
     return contact;
 }
 
-std::optional<Contact> collide(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b) {
-    std::optional<Contact> contact;
+bool overlaps(const RigidBody& a, const RigidBody& b) {
     const ShapeKind ka = a.shape.kind;
     const ShapeKind kb = b.shape.kind;
-    if (ka == ShapeKind::sphere && kb == ShapeKind::sphere) {
-        contact = collide_spheres(a, b);
-    } else if (ka == ShapeKind::sphere && kb == ShapeKind::plane) {
-        contact = collide_sphere_plane(a, b);
-    } else if (ka == ShapeKind::plane && kb == ShapeKind::sphere) {
-        contact = collide_sphere_plane(b, a);
+    if (ka == ShapeKind::sphere && kb == ShapeKind::sphere) return spheres_overlap(a, b);
+    if (ka == ShapeKind::sphere && kb == ShapeKind::plane) return sphere_plane_overlap(a, b);
+    if (ka == ShapeKind::plane && kb == ShapeKind::sphere) return sphere_plane_overlap(b, a);
+    // A pair with a box is decided in full by the separating-axis test of write_contact()
+    // (box_detection.cpp); here only its bounding spheres, so most far pairs stop cheaply.
+    if (ka == ShapeKind::box || kb == ShapeKind::box) return bounding_spheres_may_touch(a, b);
+    // Plane-plane pairs are two immovable bodies and never need a response.
+    return false;
+}
+
+bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact) {
+    if (a.shape.kind == ShapeKind::box || b.shape.kind == ShapeKind::box)
+        return collide_with_box(a, index_a, b, index_b, contact);
+    if (a.shape.kind == ShapeKind::plane) {
+        write_sphere_plane(b, a, contact);
         std::swap(index_a, index_b);
+    } else if (b.shape.kind == ShapeKind::plane) {
+        write_sphere_plane(a, b, contact);
+    } else {
+        write_spheres(a, b, contact);
     }
-    // Plane-plane pairs are two immovable bodies and never need a response; boxes arrive
-    // with chapter 4 and are rejected by the scene loader until then.
-    if (contact) {
-        contact->body1 = index_a;
-        contact->body2 = index_b;
-    }
+    contact.body1 = index_a;
+    contact.body2 = index_b;
+    return true;
+}
+
+std::optional<Contact> collide(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b) {
+    if (!overlaps(a, b)) return std::nullopt;
+    Contact contact;
+    if (!write_contact(a, index_a, b, index_b, contact)) return std::nullopt;
     return contact;
 }
 

@@ -33,4 +33,17 @@ RigidBody make_immovable_sphere(double radius, const Vector3& position) {
     return body;
 }
 
+RigidBody make_box(double mass, const Vector3& half_extents, const Vector3& position, const Quaternion& orientation,
+                   const Vector3& velocity) {
+    RigidBody body;
+    body.inverse_mass = 1.0 / mass;
+    body.inertia_body = solid_box_inertia(mass, half_extents);
+    body.position = position;
+    body.orientation = orientation;
+    body.velocity = velocity;
+    body.shape = Shape::box(half_extents);
+    body.update_world_inertia();
+    return body;
+}
+
 }  // namespace workbook

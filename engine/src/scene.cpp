@@ -4,9 +4,12 @@
 #include <fstream>
 #include <functional>
 #include <initializer_list>
+#include <numbers>
 #include <sstream>
 #include <vector>
 #include <nlohmann/json.hpp>
+
+#include "workbook/scene_limits.hpp"
 
 namespace workbook {
 
@@ -83,6 +86,8 @@ public:
     }
 
     [[nodiscard]] std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+    [[nodiscard]] const std::string& file() const { return file_; }
 
     [[noreturn]] void fail(const std::string& field_path, const std::string& problem) const {
         throw SceneError(file_, field_path, problem);
@@ -176,39 +181,181 @@ Shape read_shape(const Reader& body, const std::string& path, const std::string&
         if (length(n) == 0.0) shape.fail(shape.field("normal"), "must not be the zero vector");
         return Shape::plane(normalized(n));
     }
-    shape.fail(shape.field("type"), "unknown shape type \"" + type + "\" (supported: sphere, plane)");
+    if (type == "box") {
+        shape.only_keys({"type", "half_extents"});
+        const Vector3 h = shape.vector("half_extents");
+        if (!(h.x > 0.0 && h.y > 0.0 && h.z > 0.0))
+            shape.fail(shape.field("half_extents"), "every half extent must be a positive number of metres, got [" +
+                                                        Reader::format(h.x) + ", " + Reader::format(h.y) + ", " +
+                                                        Reader::format(h.z) + "]");
+        return Shape::box(h);
+    }
+    shape.fail(shape.field("type"), "unknown shape type \"" + type + "\" (supported: sphere, plane, box)");
+}
+
+/// How far a scene's quaternion may stray from unit length: a hand-typed quaternion with
+/// six or more correct digits is accepted (and normalised), a wrong one is refused.
+constexpr double quaternion_length_tolerance = 1e-6;
+
+/// The body's orientation: {"axis": [x, y, z], "angle_degrees": a} or {"quaternion": [w, x, y, z]}.
+Quaternion read_orientation(const Reader& body, const std::string& file) {
+    const std::string path = body.field("orientation");
+    const Reader orientation(body.required("orientation"), path, file);
+    orientation.only_keys({"axis", "angle_degrees", "quaternion"});
+    if (orientation.has("quaternion")) {
+        if (orientation.has("axis") || orientation.has("angle_degrees"))
+            orientation.fail(path, "give either \"quaternion\" or \"axis\" with \"angle_degrees\", not both");
+        const std::string field = orientation.field("quaternion");
+        const auto& value = orientation.required("quaternion");
+        if (!value.is_array() || value.size() != 4)
+            orientation.fail(field, "must be an array of four numbers [w, x, y, z], got " + value.dump());
+        const Quaternion q{orientation.as_number(value[0], field + "[0]"), orientation.as_number(value[1], field + "[1]"),
+                           orientation.as_number(value[2], field + "[2]"), orientation.as_number(value[3], field + "[3]")};
+        const double n = norm(q);
+        if (!(std::abs(n - 1.0) <= quaternion_length_tolerance))
+            orientation.fail(field, "must be a unit quaternion (length 1 within " +
+                                        Reader::format(quaternion_length_tolerance) + "), got length " + Reader::format(n));
+        return normalized(q);
+    }
+    if (!orientation.has("axis") && !orientation.has("angle_degrees"))
+        orientation.fail(path, "give \"axis\" and \"angle_degrees\", or \"quaternion\"");
+    const Vector3 axis = orientation.vector("axis");
+    const double degrees = orientation.number("angle_degrees");
+    if (length(axis) == 0.0) orientation.fail(orientation.field("axis"), "must not be the zero vector");
+    return normalized(from_axis_angle(normalized(axis), degrees * std::numbers::pi / 180.0));
+}
+
+/// The inertia tensor of a movable body of `mass` with this shape, in body space.
+Matrix3 solid_inertia(const Shape& shape, double mass) {
+    return shape.kind == ShapeKind::box ? solid_box_inertia(mass, shape.half_extents)
+                                        : solid_sphere_inertia(mass, shape.radius);
 }
 
 RigidBody read_body(const json& value, const std::string& path, const std::string& file, std::string& name) {
     const Reader body(value, path, file);
-    body.only_keys({"name", "shape", "mass", "immovable", "position", "velocity", "angular_velocity", "restitution"});
+    body.only_keys({"name", "shape", "mass", "immovable", "position", "velocity", "angular_velocity", "restitution",
+                    "orientation", "kinematic"});
     name = body.text_or("name", path);
 
     RigidBody rb;
     rb.shape = read_shape(body, body.field("shape"), file);
     const bool immovable = body.boolean_or("immovable", false);
+    // A kinematic body is immovable (inverse mass 0: no impulse changes it) but moves at the
+    // velocity it was given, like a conveyor or a moving platform.
+    const bool kinematic = body.boolean_or("kinematic", false);
+    if (immovable && kinematic)
+        body.fail(body.field("kinematic"),
+                  "a body is either immovable (never moves) or kinematic (moves at a set velocity), not both");
     if (immovable && body.has("mass"))
         body.fail(body.field("mass"), "an immovable body has no mass; remove \"mass\" or \"immovable\"");
-    if (!immovable && rb.shape.kind == ShapeKind::plane)
+    if (kinematic && body.has("mass"))
+        body.fail(body.field("mass"), "a kinematic body has no mass (impulses never change it); remove \"mass\" or \"kinematic\"");
+    if (!immovable && !kinematic && rb.shape.kind == ShapeKind::plane)
         body.fail(body.field("immovable"), "a plane must be immovable (set \"immovable\": true)");
-    if (immovable) {
+    if (immovable || kinematic) {
         rb.inverse_mass = 0.0;
         rb.inertia_body = Matrix3::zero();
     } else {
         const double mass = body.positive("mass");
         rb.inverse_mass = 1.0 / mass;
-        rb.inertia_body = solid_sphere_inertia(mass, rb.shape.radius);
+        rb.inertia_body = solid_inertia(rb.shape, mass);
     }
     rb.position = body.vector_or("position", {});
+    if (body.has("orientation")) rb.orientation = read_orientation(body, file);
     rb.velocity = body.vector_or("velocity", {});
     rb.angular_velocity = body.vector_or("angular_velocity", {});
     rb.restitution = body.number_or("restitution", 1.0);
     if (rb.restitution < 0.0 || rb.restitution > 1.0)
         body.fail(body.field("restitution"), "must lie in [0, 1], got " + Reader::format(rb.restitution));
-    if (immovable && (rb.velocity != Vector3{} || rb.angular_velocity != Vector3{}))
-        body.fail(body.field("velocity"), "an immovable body cannot move; give it no velocity");
+    if (immovable && rb.velocity != Vector3{})
+        body.fail(body.field("velocity"), "an immovable body cannot move; give it no velocity (a moving platform is \"kinematic\": true)");
+    if (immovable && rb.angular_velocity != Vector3{})
+        body.fail(body.field("angular_velocity"),
+                  "an immovable body cannot rotate; give it no angular_velocity (a turning platform is \"kinematic\": true)");
+    if (kinematic && rb.velocity == Vector3{} && rb.angular_velocity == Vector3{})
+        body.fail(body.field("velocity"),
+                  "a kinematic body needs a velocity or an angular_velocity; one that never moves is \"immovable\": true");
     rb.update_world_inertia();
     return rb;
+}
+
+/// The projection knobs. A fraction of 2 or more makes the depth grow step by step instead of
+/// shrinking; chapter 2 shows that on purpose, so up to 4 is accepted and beyond is refused.
+PositionCorrection read_position_correction(const Reader& root) {
+    const Reader knobs(root.required("position_correction"), "position_correction", root.file());
+    knobs.only_keys({"fraction", "slop"});
+    PositionCorrection result;
+    result.fraction = knobs.number_or("fraction", result.fraction);
+    if (!(result.fraction > 0.0 && result.fraction <= 4.0))
+        knobs.fail(knobs.field("fraction"), "must lie in (0, 4], got " + Reader::format(result.fraction));
+    result.slop = knobs.number_or("slop", result.slop);
+    if (result.slop < 0.0) knobs.fail(knobs.field("slop"), "must be zero or positive, got " + Reader::format(result.slop));
+    return result;
+}
+
+/// The optional "sweep": {"fraction": [b1, b2, ...]}, each value a valid fraction.
+std::vector<double> read_fraction_sweep(const Reader& root) {
+    const Reader sweep(root.required("sweep"), "sweep", root.file());
+    sweep.only_keys({"fraction"});
+    const json& values = sweep.required("fraction");
+    if (!values.is_array() || values.empty()) sweep.fail(sweep.field("fraction"), "must be a non-empty array of numbers");
+    std::vector<double> result;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const std::string path = sweep.field("fraction") + "[" + std::to_string(i) + "]";
+        const double fraction = sweep.as_number(values[i], path);
+        if (!(fraction > 0.0 && fraction <= 4.0)) sweep.fail(path, "must lie in (0, 4], got " + Reader::format(fraction));
+        result.push_back(fraction);
+    }
+    return result;
+}
+
+/// Integrators past the first two (which parse_scene reads itself).
+Integrator parse_more_integrators(const Reader& root, const std::string& integrator) {
+    if (integrator == "exact-under-gravity") return Integrator::exact_under_gravity;
+    root.fail("integrator", "unknown integrator \"" + integrator +
+                                "\" (available: semi-implicit-euler, explicit-euler, exact-under-gravity)");
+}
+
+ContactTiming read_contact_timing(const Reader& root) {
+    const std::string timing = root.text_or("contact_timing", "discrete");
+    if (timing == "discrete") return ContactTiming::discrete;
+    if (timing == "event") return ContactTiming::event;
+    root.fail("contact_timing", "unknown contact timing \"" + timing + "\" (available: discrete, event)");
+}
+
+/// Refuses a scene that would need absurd work or memory, or overflow (workbook/scene_limits.hpp).
+void check_limits(const Reader& root, const Scene& scene) {
+    const SceneLimits& limits = scene_limits;
+    const double steps = scene.duration / scene.settings.time_step;
+    if (!(steps <= limits.max_steps))
+        root.fail("duration", "needs " + Reader::format(steps) + " steps of " + Reader::format(scene.settings.time_step) +
+                                  " s; the limit is " + Reader::format(limits.max_steps) + " steps (duration / time_step)");
+    const auto check_vector = [&root](const std::string& field, const Vector3& v, double limit, const char* unit) {
+        const double components[] = {v.x, v.y, v.z};
+        for (int i = 0; i < 3; ++i)
+            if (!(std::abs(components[i]) <= limit))
+                root.fail(field + "[" + std::to_string(i) + "]", "magnitude " + Reader::format(std::abs(components[i])) +
+                                                                     " is over the limit of " + Reader::format(limit) + " " + unit);
+    };
+    check_vector("gravity", scene.settings.gravity, limits.max_gravity, "m/s^2");
+    if (scene.bodies.size() > limits.max_bodies)
+        root.fail("bodies", std::to_string(scene.bodies.size()) + " bodies are over the limit of " +
+                                std::to_string(limits.max_bodies));
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const RigidBody& body = scene.bodies[i];
+        const std::string path = "bodies[" + std::to_string(i) + "]";
+        check_vector(path + ".position", body.position, limits.max_coordinate, "m");
+        check_vector(path + ".velocity", body.velocity, limits.max_speed, "m/s");
+        check_vector(path + ".angular_velocity", body.angular_velocity, limits.max_angular_speed, "rad/s");
+        if (!body.is_immovable() && (body.mass() < limits.min_mass || body.mass() > limits.max_mass))
+            root.fail(path + ".mass", "must lie in [" + Reader::format(limits.min_mass) + ", " +
+                                          Reader::format(limits.max_mass) + "] kg, got " + Reader::format(body.mass()));
+        if (body.shape.kind == ShapeKind::sphere &&
+            (body.shape.radius < limits.min_radius || body.shape.radius > limits.max_radius))
+            root.fail(path + ".shape.radius", "must lie in [" + Reader::format(limits.min_radius) + ", " +
+                                                  Reader::format(limits.max_radius) + "] m, got " +
+                                                  Reader::format(body.shape.radius));
+    }
 }
 
 }  // namespace
@@ -225,7 +372,8 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
     }
 
     const Reader root(document, "", source);
-    root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "integrator", "bodies"});
+    root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "integrator",
+                    "position_correction", "sweep", "bodies", "contact_timing", "swept_spheres"});
 
     Scene scene;
     scene.title = root.text("title");
@@ -251,15 +399,25 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
     else if (integrator == "explicit-euler")
         scene.settings.integrator = Integrator::explicit_euler;
     else
-        root.fail("integrator", "unknown integrator \"" + integrator + "\" (available: semi-implicit-euler, explicit-euler)");
+        scene.settings.integrator = parse_more_integrators(root, integrator);
+    scene.settings.contact_timing = read_contact_timing(root);
+    scene.settings.swept_spheres = root.boolean_or("swept_spheres", scene.settings.swept_spheres);
+
+    if (root.has("position_correction")) scene.settings.position_correction = read_position_correction(root);
+    if (root.has("sweep")) scene.fraction_sweep = read_fraction_sweep(root);
 
     const json& bodies = root.required("bodies");
     if (!bodies.is_array() || bodies.empty()) root.fail("bodies", "must be a non-empty array of bodies");
+    // Counted before any body is read, so that a huge array is refused at once.
+    if (bodies.size() > scene_limits.max_bodies)
+        root.fail("bodies", std::to_string(bodies.size()) + " bodies are over the limit of " +
+                                std::to_string(scene_limits.max_bodies));
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         std::string name;
         scene.bodies.push_back(read_body(bodies[i], "bodies[" + std::to_string(i) + "]", source, name));
         scene.body_names.push_back(std::move(name));
     }
+    check_limits(root, scene);
     return scene;
 }
 
@@ -271,6 +429,10 @@ Scene load_scene(const std::filesystem::path& path, std::span<const std::string_
     return parse_scene(text.str(), path.string(), known_responders);
 }
 
-World make_world(const Scene& scene, const ResponseModel& model) { return World(scene.bodies, scene.settings, model); }
+World make_world(const Scene& scene, const ResponseModel& model) {
+    World world(scene.bodies, scene.settings, model);
+    world.name_bodies(scene.body_names);
+    return world;
+}
 
 }  // namespace workbook

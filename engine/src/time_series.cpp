@@ -25,7 +25,7 @@ std::vector<Probes> run(World& world, double duration) {
 const char* csv_header() {
     return "t,kinetic_linear,kinetic_rotational,potential,total,"
            "momentum_x,momentum_y,momentum_z,angular_momentum_x,angular_momentum_y,angular_momentum_z,"
-           "response_energy_change,contacts";
+           "response_energy_change,contacts,penetration_max";
 }
 
 void write_csv(std::ostream& out, const std::vector<Probes>& samples) {
@@ -38,7 +38,7 @@ void write_csv(std::ostream& out, const std::vector<Probes>& samples) {
         out << p.time << ',' << p.kinetic_linear << ',' << p.kinetic_rotational << ',' << p.potential << ','
             << p.total_energy() << ',' << p.linear_momentum.x << ',' << p.linear_momentum.y << ','
             << p.linear_momentum.z << ',' << p.angular_momentum.x << ',' << p.angular_momentum.y << ','
-            << p.angular_momentum.z << ',' << p.response_energy_change << ',' << p.contacts << '\n';
+            << p.angular_momentum.z << ',' << p.response_energy_change << ',' << p.contacts << ',' << p.penetration_max << '\n';
     }
     out.precision(old_precision);
     out.flags(old_flags);

@@ -1,71 +1,118 @@
 #include "workbook/world.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "workbook/detection.hpp"
+#include "workbook/event_timing.hpp"
+#include "workbook/guards.hpp"
+#include "workbook/rotation.hpp"
+#include "workbook/swept_spheres.hpp"
 
 namespace workbook {
-
-namespace {
-
-/// The largest number of contacts a step can produce: one per pair with a movable body.
-std::size_t worst_case_contacts(std::span<const RigidBody> bodies) {
-    std::size_t movable = 0;
-    for (const RigidBody& body : bodies)
-        if (!body.is_immovable()) ++movable;
-    const std::size_t immovable = bodies.size() - movable;
-    const std::size_t movable_pairs = movable > 0 ? movable * (movable - 1) / 2 : 0;
-    return movable_pairs + movable * immovable;
-}
-
-}  // namespace
 
 World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model)
     : bodies_(std::move(bodies)), settings_(settings), model_(model) {
     for (RigidBody& body : bodies_) body.update_world_inertia();
-    contacts_.reserve(worst_case_contacts(bodies_));
+    // Contacts are stored in proportion to the contacts there are: room for one per body up
+    // front (a resting pile has about one per body, the gas of bench/ 1.5% of one), then
+    // doubling while a scene warms up; capacity is kept, so a warm step allocates nothing
+    // (tests/engine/allocation.cpp). The broad phase's buffers grow the same way.
+    contacts_.reserve(bodies_.size());
 }
 
 void World::step() {
-    integrate();
-    detect();
-    respond();
-    correct();
+    if (settings_.contact_timing == ContactTiming::event) {
+        step_with_event_timing(*this);
+    } else {
+        integrate();
+        guard("integrate");
+        detect();
+        if (settings_.swept_spheres) sweep_fast_spheres(*this);
+        guard("detect");
+        respond();
+        guard("respond");
+        correct();
+        guard("correct");
+    }
+    ++steps_;
     time_ += settings_.time_step;
 }
+
+void World::guard(const char* stage) const {
+    if (settings_.check_finite) check_finite(bodies_, body_names_, steps_ + 1, stage);
+}
+
+namespace {
+
+bool has_gravity(const WorldSettings& settings, const Shortcuts& shortcuts) {
+    return !shortcuts.skip_zero_gravity || settings.gravity != Vector3{};
+}
+
+}  // namespace
 
 void World::integrate() {
     const double dt = settings_.time_step;
     const Vector3 gravity_kick = settings_.gravity * dt;
+    const bool gravity = has_gravity(settings_, shortcuts_);
+    const bool semi_implicit = settings_.integrator == Integrator::semi_implicit_euler;
     for (RigidBody& body : bodies_) {
-        if (body.is_immovable()) continue;
-        if (settings_.integrator == Integrator::semi_implicit_euler) {
-            body.velocity += gravity_kick;
+        if (body.is_immovable()) {
+            // Kinematic bodies move at their own constant velocity and spin; gravity and
+            // contacts never change them (immovable ones have neither, and stay put).
+            advance_kinematic(body, dt);
+            continue;
+        }
+        if (semi_implicit) {
+            if (gravity) body.velocity += gravity_kick;
             body.position += body.velocity * dt;
+        } else if (settings_.integrator == Integrator::exact_under_gravity) {
+            body.position += body.velocity * dt + gravity_kick * (0.5 * dt);
+            body.velocity += gravity_kick;
         } else {
             body.position += body.velocity * dt;
-            body.velocity += gravity_kick;
+            if (gravity) body.velocity += gravity_kick;
         }
-        if (body.angular_velocity == Vector3{}) continue;
-        body.orientation = workbook::integrate(body.orientation, body.angular_velocity, dt);
-        body.update_world_inertia();
+        if (shortcuts_.skip_still_rotation && body.angular_velocity == Vector3{}) continue;
+        advance_free_rotation(body, dt);
     }
 }
 
 void World::detect() {
     contacts_.clear();
+    used_broad_phase_ = shortcuts_.broad_phase && bodies_.size() >= shortcuts_.broad_phase_from;
+    if (used_broad_phase_) {
+        broad_phase_.find_pairs(bodies_, pairs_, !shortcuts_.skip_immovable_pairs);
+        for (const auto [i, j] : pairs_) add_contact_if_any(i, j);
+        return;
+    }
     const auto count = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < count; ++i) {
         for (std::uint32_t j = i + 1; j < count; ++j) {
-            if (bodies_[i].is_immovable() && bodies_[j].is_immovable()) continue;
-            if (auto contact = collide(bodies_[i], i, bodies_[j], j)) contacts_.push_back(*contact);
+            if (shortcuts_.skip_immovable_pairs && bodies_[i].is_immovable() && bodies_[j].is_immovable()) continue;
+            add_contact_if_any(i, j);
         }
     }
+}
+
+void World::add_contact_if_any(std::uint32_t i, std::uint32_t j) {
+    const RigidBody& a = bodies_[i];
+    const RigidBody& b = bodies_[j];
+    if (!overlaps(a, b)) return;
+    // Two immovable bodies never get a contact: nothing could answer it.
+    if (a.is_immovable() && b.is_immovable()) return;
+    // The slot is reserved first so the contact is written in place; a box pair that the full
+    // test finds apart gives it back (pop_back keeps the capacity: still no allocation).
+    if (!write_contact(a, i, b, j, contacts_.emplace_back())) contacts_.pop_back();
 }
 
 void World::respond() {
     response_energy_change_ = 0.0;
     if (model_.respond == nullptr) return;
+    if (!shortcuts_.response_energy_probe) {
+        for (const Contact& contact : contacts_) model_.respond(bodies_[contact.body1], bodies_[contact.body2], contact);
+        return;
+    }
     for (const Contact& contact : contacts_) {
         RigidBody& body1 = bodies_[contact.body1];
         RigidBody& body2 = bodies_[contact.body2];
@@ -77,15 +124,59 @@ void World::respond() {
 
 void World::correct() {
     if (model_.correct == nullptr) return;
-    for (const Contact& contact : contacts_) model_.correct(bodies_[contact.body1], bodies_[contact.body2], contact);
+    for (const Contact& contact : contacts_)
+        model_.correct(bodies_[contact.body1], bodies_[contact.body2], contact, settings_.position_correction);
 }
 
 Probes World::probes() const {
-    Probes p = measure(bodies_, settings_.gravity);
+    Probes p = measure(bodies_, settings_.gravity, shortcuts_.skip_still_rotation);
     p.time = time_;
     p.response_energy_change = response_energy_change_;
     p.contacts = static_cast<int>(contacts_.size());
+    for (const Contact& contact : contacts_) p.penetration_max = std::max(p.penetration_max, contact.penetration);
     return p;
+}
+
+}  // namespace workbook
+
+namespace workbook {
+
+std::vector<StageUse> World::plan() const {
+    std::size_t movable = 0, spinning = 0, planes = 0;
+    for (const RigidBody& body : bodies_) {
+        if (body.is_immovable()) {
+            planes += body.shape.kind == ShapeKind::plane ? 1 : 0;
+            continue;
+        }
+        ++movable;
+        if (body.angular_velocity != Vector3{}) ++spinning;
+    }
+    const std::size_t immovable = bodies_.size() - movable;
+    const auto n = std::to_string(bodies_.size());
+    std::vector<StageUse> stages;
+    stages.push_back({"integrate: positions", true, std::to_string(movable) + " movable bodies"});
+    const bool gravity = has_gravity(settings_, shortcuts_);
+    stages.push_back({"integrate: gravity", gravity, gravity ? "gravity is not zero" : "gravity is zero"});
+    const bool rotation = !shortcuts_.skip_still_rotation || spinning > 0;
+    stages.push_back({"integrate: rotation", rotation,
+                      rotation ? std::to_string(spinning) + " bodies spin at the start; the others are skipped while they do not"
+                               : "no body spins at the start; skipped for each body as long as it does not"});
+    const bool grid = shortcuts_.broad_phase && bodies_.size() >= shortcuts_.broad_phase_from;
+    stages.push_back({"detect: broad phase (grid)", grid,
+                      grid ? n + " bodies; " + std::to_string(planes) + " planes are paired only with bodies that reach them"
+                           : n + " bodies, fewer than " + std::to_string(shortcuts_.broad_phase_from) +
+                                 ": testing every pair is cheaper"});
+    const std::size_t immovable_pairs = immovable > 1 ? immovable * (immovable - 1) / 2 : 0;
+    stages.push_back({"detect: pairs of immovable bodies", !shortcuts_.skip_immovable_pairs,
+                      std::to_string(immovable_pairs) + " such pairs, never tested"});
+    stages.push_back({"respond", model_.respond != nullptr,
+                      model_.respond != nullptr ? "responder '" + std::string(model_.name) + "'" : "the model has no velocity responder"});
+    stages.push_back({"respond: energy probe", model_.respond != nullptr && shortcuts_.response_energy_probe,
+                      shortcuts_.response_energy_probe ? "recorded (response_energy_change)" : "not recorded by this run"});
+    stages.push_back({"correct", model_.correct != nullptr,
+                      model_.correct != nullptr ? "position corrector of '" + std::string(model_.name) + "'"
+                                                : "the model has no position corrector"});
+    return stages;
 }
 
 }  // namespace workbook

@@ -188,10 +188,7 @@ TEST_CASE("collide: pairs without a narrow phase give no contact", "[detection][
     const RigidBody floor = make_immovable_plane({0, 1, 0}, {0, 0, 0});
     const RigidBody wall = make_immovable_plane({1, 0, 0}, {0, 0, 0});
     CHECK_FALSE(collide(floor, 0, wall, 1).has_value());
-
-    RigidBody box = make_sphere(1.0, 0.5, {0, 0, 0});
-    box.shape = Shape::box({0.5, 0.5, 0.5});
-    CHECK_FALSE(collide(box, 0, floor, 1).has_value());
+    // Pairs with a box have their own narrow phase since chapter 4: see box_detection.cpp.
 }
 
 TEST_CASE("Contact::add_point keeps the deepest penetration and stops at capacity", "[detection][contact]") {

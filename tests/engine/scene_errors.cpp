@@ -71,9 +71,10 @@ TEST_CASE("scene error messages read FILE: FIELD: PROBLEM, word for word", "[sce
     check_message(
         scene_with_second_body(R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "veloctiy": [1, 0, 0]})"),
         "bodies[1].veloctiy",
-        "unknown key (allowed here: name, shape, mass, immovable, position, velocity, angular_velocity, restitution)",
+        "unknown key (allowed here: name, shape, mass, immovable, position, velocity, angular_velocity, restitution, "
+        "orientation, kinematic)",
         "bad.json: bodies[1].veloctiy: unknown key (allowed here: name, shape, mass, immovable, position, velocity, "
-        "angular_velocity, restitution)");
+        "angular_velocity, restitution, orientation, kinematic)");
     check_message(scene_with_second_body(R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": "2"})"),
                   "bodies[1].mass", R"(must be a number, got the string "2")",
                   R"(bad.json: bodies[1].mass: must be a number, got the string "2")");
@@ -89,7 +90,8 @@ TEST_CASE("unknown keys are named with their full path", "[scene][errors]") {
     SECTION("top level") {
         check_parts(error_from(scene_with(R"("time_step": 0.01, "duration": 1, "gravty": [0, -9.81, 0], )", valid_ball)),
                     "gravty",
-                    "unknown key (allowed here: title, description, responder, time_step, duration, gravity, integrator, bodies)");
+                    "unknown key (allowed here: title, description, responder, time_step, duration, gravity, integrator, "
+                    "position_correction, sweep, bodies, contact_timing, swept_spheres)");
     }
     SECTION("in a body") {
         check_parts(error_from(scene_with_second_body(
@@ -259,23 +261,23 @@ TEST_CASE("body-level rules: restitution, planes, immovable bodies, shapes", "[s
                         R"({"shape": {"type": "sphere", "radius": 1}, "immovable": true, "mass": 3})")),
                     "bodies[1].mass", "an immovable body has no mass");
     }
-    SECTION("an immovable body with a velocity") {
+    SECTION("an immovable body with an angular velocity") {
         check_parts(error_from(scene_with_second_body(
-                        R"({"shape": {"type": "sphere", "radius": 1}, "immovable": true, "velocity": [0, 1, 0]})")),
-                    "bodies[1].velocity", "an immovable body cannot move");
+                        R"({"shape": {"type": "sphere", "radius": 1}, "immovable": true, "angular_velocity": [0, 1, 0]})")),
+                    "bodies[1].angular_velocity", "an immovable body cannot rotate");
     }
     SECTION("an unknown shape type") {
         check_parts(error_from(scene_with_second_body(R"({"shape": {"type": "cube", "size": 1}, "mass": 1})")),
-                    "bodies[1].shape.type", R"(unknown shape type "cube" (supported: sphere, plane))");
+                    "bodies[1].shape.type", R"(unknown shape type "cube" (supported: sphere, plane, box))");
     }
 }
 
-TEST_CASE("the integrator is one of the two the world has", "[scene][errors]") {
+TEST_CASE("the integrator is one of those the world has", "[scene][errors]") {
     const std::string explicit_euler =
         scene_with(R"("time_step": 0.01, "duration": 1, "integrator": "explicit-euler", )", valid_ball);
     CHECK(parse_scene(explicit_euler, "good.json").settings.integrator == Integrator::explicit_euler);
     const SceneError error = error_from(scene_with(R"("time_step": 0.01, "duration": 1, "integrator": "rk4", )", valid_ball));
-    check_parts(error, "integrator", R"(unknown integrator "rk4" (available: semi-implicit-euler, explicit-euler))");
+    check_parts(error, "integrator", R"(unknown integrator "rk4" (available: semi-implicit-euler, explicit-euler, exact-under-gravity))");
 }
 
 TEST_CASE("an unknown responder is named with the ones that exist", "[scene][errors]") {
@@ -321,4 +323,28 @@ TEST_CASE("a missing file is a SceneError naming the file", "[scene][errors]") {
         CHECK(error.problem() == "cannot open the file");
         CHECK(std::string(error.what()) == missing.string() + ": cannot open the file");
     }
+}
+
+TEST_CASE("position correction knobs are checked with their path", "[scene][errors]") {
+    const auto with_knobs = [](const std::string& knobs) {
+        return scene_with(R"("time_step": 0.01, "duration": 1, "position_correction": )" + knobs + ", ", valid_ball);
+    };
+    check_parts(error_from(with_knobs(R"({"fraction": 0})")), "position_correction.fraction", "must lie in (0, 4], got 0");
+    check_parts(error_from(with_knobs(R"({"fraction": 4.5})")), "position_correction.fraction", "must lie in (0, 4], got 4.5");
+    check_parts(error_from(with_knobs(R"({"slop": -0.001})")), "position_correction.slop",
+                "must be zero or positive, got -0.001");
+    check_parts(error_from(with_knobs(R"({"percent": 0.2})")), "position_correction.percent",
+                "unknown key (allowed here: fraction, slop)");
+    check_parts(error_from(with_knobs("0.2")), "position_correction", "must be an object");
+}
+
+TEST_CASE("a fraction sweep is checked value by value, with its path", "[scene][errors]") {
+    const auto with_sweep = [](const std::string& sweep) {
+        return scene_with(R"("time_step": 0.01, "duration": 1, "sweep": )" + sweep + ", ", valid_ball);
+    };
+    check_parts(error_from(with_sweep(R"({"fraction": []})")), "sweep.fraction", "must be a non-empty array of numbers");
+    check_parts(error_from(with_sweep(R"({"fraction": [0.5, 0]})")), "sweep.fraction[1]", "must lie in (0, 4], got 0");
+    check_parts(error_from(with_sweep(R"({"fraction": [0.5, "1"]})")), "sweep.fraction[1]",
+                "must be a number, got the string \"1\"");
+    check_parts(error_from(with_sweep(R"({"slop": [0.5]})")), "sweep.slop", "unknown key (allowed here: fraction)");
 }

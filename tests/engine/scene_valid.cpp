@@ -49,6 +49,8 @@ TEST_CASE("a valid scene parses to its settings", "[scene]") {
     CHECK(scene.duration == 2.0);
     CHECK(scene.settings.gravity == Vector3{0, -9.81, 0});
     CHECK(scene.settings.integrator == Integrator::semi_implicit_euler);  // the default
+    CHECK(scene.settings.position_correction.fraction == 1.0);           // the default: the whole depth
+    CHECK(scene.settings.position_correction.slop == 0.0);
     REQUIRE(scene.bodies.size() == 4);
     CHECK(scene.body_names == std::vector<std::string>{"heavy", "bodies[1]", "ground", "post"});
 }
@@ -100,6 +102,17 @@ TEST_CASE("a valid scene parses to the right immovable bodies", "[scene]") {
     CHECK(post.restitution == 0.0);
 }
 
+TEST_CASE("a kinematic body with a velocity is a moving platform", "[scene]") {
+    const Scene scene = parse_scene(R"({"title": "Platform", "description": "A ball lands on a moving platform.",
+      "responder": "none", "time_step": 0.01, "duration": 1, "bodies": [
+        {"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "position": [0, 1, 0]},
+        {"name": "platform", "shape": {"type": "plane", "normal": [0, 1, 0]}, "kinematic": true, "velocity": [1.5, 0, 0]}]})",
+                                    "platform.json");
+    REQUIRE(scene.bodies.size() == 2);
+    CHECK(scene.bodies[1].is_immovable());
+    CHECK(scene.bodies[1].velocity == Vector3{1.5, 0, 0});
+}
+
 TEST_CASE("make_world builds the world a scene describes", "[scene]") {
     const Scene scene = parse_scene(two_balls_on_the_ground, "two_balls.json");
     const World world = make_world(scene, no_response);
@@ -138,4 +151,21 @@ TEST_CASE("load_scene reads the same scene from a file", "[scene]") {
         CHECK(from_file.bodies[i].inverse_mass == from_text.bodies[i].inverse_mass);
         CHECK(from_file.bodies[i].shape.kind == from_text.bodies[i].shape.kind);
     }
+}
+
+TEST_CASE("position correction knobs are read from the scene", "[scene]") {
+    std::string text = two_balls_on_the_ground;
+    text.replace(text.find(R"("gravity")"), 0, R"("position_correction": {"fraction": 0.2, "slop": 0.005}, )");
+    const Scene scene = parse_scene(text, "knobs.json");
+    CHECK(scene.settings.position_correction.fraction == 0.2);
+    CHECK(scene.settings.position_correction.slop == 0.005);
+}
+
+TEST_CASE("a fraction sweep is read from the scene and leaves the run's own knobs alone", "[scene]") {
+    std::string text = two_balls_on_the_ground;
+    text.replace(text.find(R"("gravity")"), 0, R"("sweep": {"fraction": [0.2, 1.5, 2.5]}, )");
+    const Scene scene = parse_scene(text, "sweep.json");
+    CHECK(scene.fraction_sweep == std::vector<double>{0.2, 1.5, 2.5});
+    CHECK(scene.settings.position_correction.fraction == 1.0);
+    CHECK(parse_scene(two_balls_on_the_ground, "plain.json").fraction_sweep.empty());
 }

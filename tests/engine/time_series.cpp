@@ -43,6 +43,7 @@ std::vector<Probes> awkward_samples() {
     first.angular_momentum = {1.0 / 7.0, -0.0, 123456789.123456789};
     first.response_energy_change = -std::numeric_limits<double>::epsilon();
     first.contacts = 3;
+    first.penetration_max = 0.1 + 0.2;
     Probes second = first;
     second.time = 0.2;
     second.kinetic_linear = std::numeric_limits<double>::max();
@@ -102,10 +103,11 @@ TEST_CASE("write_csv starts with csv_header() and writes one line per sample", "
     CHECK(out.str().back() == '\n');
 
     const std::vector<std::string> columns = split_csv_line(csv_header());
-    REQUIRE(columns.size() == 13);
+    REQUIRE(columns.size() == 14);
     CHECK(columns.front() == "t");
     CHECK(columns[4] == "total");
-    CHECK(columns.back() == "contacts");
+    CHECK(columns[12] == "contacts");
+    CHECK(columns.back() == "penetration_max");
     for (std::size_t i = 1; i < lines.size(); ++i) CHECK(split_csv_line(lines[i]).size() == columns.size());
 }
 
@@ -120,7 +122,7 @@ TEST_CASE("write_csv values read back bit for bit", "[time_series][csv]") {
         CAPTURE(i, lines[i + 1]);
         const Probes& p = samples[i];
         const std::vector<std::string> cells = split_csv_line(lines[i + 1]);
-        REQUIRE(cells.size() == 13);
+        REQUIRE(cells.size() == 14);
         const std::vector<double> expected{p.time,
                                            p.kinetic_linear,
                                            p.kinetic_rotational,
@@ -138,6 +140,7 @@ TEST_CASE("write_csv values read back bit for bit", "[time_series][csv]") {
             CHECK(parse_csv_number(cells[c]) == expected[c]);
         }
         CHECK(cells[12] == std::to_string(p.contacts));
+        CHECK(parse_csv_number(cells[13]) == p.penetration_max);
     }
 }
 

@@ -4,6 +4,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_floating_point.hpp>
 
+#include <algorithm>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -30,9 +31,9 @@ void stop_both(RigidBody& body1, RigidBody& body2, const Contact&) {
 /// passed as body 1 and which way the normal pointed.
 void kick_body1_along_normal(RigidBody& body1, RigidBody&, const Contact& contact) { body1.velocity += contact.normal; }
 
-/// Moves body 1 out along the normal by the full penetration (a one-sided projection).
-void push_body1_out(RigidBody& body1, RigidBody&, const Contact& contact) {
-    body1.position += contact.normal * contact.penetration;
+/// Moves body 1 out along the normal by the knobs' share of the penetration (a one-sided projection).
+void push_body1_out(RigidBody& body1, RigidBody&, const Contact& contact, const PositionCorrection& knobs) {
+    body1.position += contact.normal * (knobs.fraction * (contact.penetration - knobs.slop));
 }
 
 const ResponseModel no_response{"none", nullptr, nullptr};
@@ -106,6 +107,21 @@ TEST_CASE("immovable bodies do not fall and do not move", "[world][integrate]") 
     CHECK(world.bodies()[0].velocity == Vector3{});
     CHECK(world.bodies()[1].position == Vector3{3, 3, 3});
     CHECK(world.contacts().empty());  // two immovable bodies are never paired
+}
+
+TEST_CASE("a kinematic body (immovable, with a velocity) keeps its velocity and moves at it", "[world][integrate]") {
+    // A moving platform: gravity does not pull it, and a ball landing on it does not slow it.
+    RigidBody platform = make_immovable_plane({0, 1, 0}, {0, 0, 0});
+    platform.velocity = {1.5, 0, 0};
+    const ResponseModel stick{"stick", [](RigidBody& a, RigidBody& b, const Contact&) {
+                                  RigidBody& mover = a.is_immovable() ? b : a;
+                                  mover.velocity = (a.is_immovable() ? a : b).velocity;
+                              }, nullptr};
+    World world({platform, make_sphere(1.0, 0.5, {0, 0.6, 0})}, WorldSettings{0.01, {0, -9.81, 0}}, stick);
+    for (int i = 0; i < 100; ++i) world.step();
+    CHECK(world.bodies()[0].velocity == Vector3{1.5, 0, 0});
+    CHECK_THAT(world.bodies()[0].position, is_close_to(Vector3{1.5, 0, 0}, 100 * 4 * eps));
+    CHECK(world.bodies()[1].velocity.x == 1.5);  // the ball rides along
 }
 
 TEST_CASE("a spinning body turns by |omega| t and its world inverse inertia follows", "[world][integrate]") {
@@ -189,6 +205,12 @@ TEST_CASE("without a response model, contacts are found and velocities left alon
     CHECK(world.bodies()[1].velocity == Vector3{-1, 0, 0} + g * dt);
     CHECK(world.probes().response_energy_change == 0.0);
     CHECK(world.probes().contacts == 3);
+    // The deepest of the three as detected: after one step the balls are 0.78 m apart and
+    // overlap by 0.22 m; each is only about 0.1 m into the ground.
+    double deepest = 0.0;
+    for (const Contact& c : world.contacts()) deepest = std::max(deepest, c.penetration);
+    CHECK(world.probes().penetration_max == deepest);
+    CHECK_THAT(deepest, Catch::Matchers::WithinAbs(0.22, 1e-12));
 }
 
 TEST_CASE("the probes report the kinetic energy the responses changed", "[world][response]") {
@@ -217,4 +239,14 @@ TEST_CASE("the world refreshes each body's world inverse inertia when built", "[
     CHECK_THAT(world.bodies()[0].inverse_inertia_world, is_close_to(Matrix3::diagonal({5, 5, 5}), 8 * eps));
     CHECK(world.model().name == "none");
     CHECK(world.settings().time_step == 1.0 / 240.0);
+}
+
+TEST_CASE("correct() hands the scene's position-correction knobs to the corrector", "[world][stages]") {
+    // A ball 0.375 m into the ground; fraction 0.5 and slop 0.125 remove 0.5 (0.375 - 0.125) = 0.125 m.
+    WorldSettings settings{0.01, {}};
+    settings.position_correction = {0.5, 0.125};
+    World world({make_immovable_plane({0, 1, 0}, {0, 0, 0}), make_sphere(1.0, 0.5, {0, 0.125, 0})}, settings, kick_and_push);
+    world.detect();
+    world.correct();
+    CHECK(world.bodies()[1].position == Vector3{0, 0.25, 0});
 }

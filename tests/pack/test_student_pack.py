@@ -2,6 +2,7 @@
 """The student edition: built into a temporary folder, built there from scratch, checked
 there, and proved free of solution and hidden-test text by its file list and its content."""
 import pathlib
+import re
 import subprocess
 import sys
 import tempfile
@@ -77,6 +78,7 @@ class StudentPackTest(unittest.TestCase):
             self.assertEqual(run.returncode, 0, f"{' '.join(command)} failed in the pack:\n{(run.stdout + run.stderr)[-3000:]}")
         site = self.pack / "build/dev/book/site/html/chapter_inelastic.html"
         self.assertTrue(site.is_file(), "the site has no chapter 1 page")
+        self.assert_site_cites_only_what_the_pack_has(self.pack / "build/dev/book/site/html")
         self.assertTrue((self.pack / "build/dev/book/figures/inelastic/head-on-carts.student.svg").is_file(),
                         "the pack draws its figures from the student's code")
         self.assertIn("tests: ", run.stdout)
@@ -91,10 +93,35 @@ class StudentPackTest(unittest.TestCase):
             self.assertNotIn("PASS  Step", output, output[-2000:])
             self.assertIn("FAIL  Step 1", output, (run.stdout + run.stderr)[-3000:])
             self.assertIn("Law broken:", output)
+        # Its ctest registers the chapter steps, one test per step, under the student preset.
+        listing = subprocess.run(["ctest", "--preset", "student", "-N"], cwd=self.pack, capture_output=True, text=True,
+                                 timeout=120)
+        for chapter in pack_student_chapters(self.pack):
+            self.assertIn(f"{chapter}.step1.", listing.stdout, listing.stdout + listing.stderr)
+        steps = subprocess.run(["ctest", "--preset", "student", "-L", "your-steps"], cwd=self.pack, capture_output=True,
+                               text=True, timeout=600)
+        self.assertNotEqual(steps.returncode, 0, "the untouched skeleton's steps must fail under ctest too")
+        self.assertIn("0% tests passed", steps.stdout, steps.stdout[-2000:])
         solutions = subprocess.run(["./workbook", "check", "inelastic", "--solutions"], cwd=self.pack,
                                    capture_output=True, text=True, timeout=120)
         self.assertNotEqual(solutions.returncode, 0)
         self.assertIn("no solutions", solutions.stderr)
+
+    def test_help_and_readme_speak_only_of_what_the_pack_has(self):
+        help_text = subprocess.run(["./workbook", "help"], cwd=self.pack, capture_output=True, text=True).stdout
+        readme = (self.pack / "README.md").read_text()
+        for text, where in ((help_text, "./workbook help"), (readme, "README.md")):
+            for absent in ("--solutions", "--student", "workbook grade", "workbook pack", "  grade ", "  pack "):
+                self.assertNotIn(absent, text, f"{where} of the student edition mentions {absent!r}")
+        self.assertIn("check CHAPTER", help_text)
+
+    def assert_site_cites_only_what_the_pack_has(self, html):
+        """No page of the pack's site names a file, folder or option the pack does not have."""
+        absent = [prefix + "/" for prefix in pack_student.EXCLUDED] + ["--solutions", "--student", "adding_a_chapter"]
+        for page in html.glob("*.html"):
+            text = re.sub(r"<[^>]+>", "", page.read_text(errors="replace"))
+            for name in absent:
+                self.assertNotIn(name, text, f"{page.name} of the student edition's site cites {name}")
 
 
 def pack_student_chapters(pack):

@@ -25,4 +25,29 @@ inline const Law energy{"energy lost in a perfectly inelastic collision", "Delta
                         "mu = 1 / (w1 + w2) with inverse masses (the other body's mass against an immovable one, and "
                         "nothing lost between two); square the length of the whole relative velocity"};
 
+// A wrong early return (step 4's test of dot(v1 - v2, n), say reversed) leaves an approaching
+// pair untouched, and steps 2 and 3 fail with it. Their usual hints would then send the
+// student to the assignment or the inverse masses, which may well be right; these hints say
+// what resolve did and what their own law needs of it.
+inline const Law stick_untouched{stick.name, stick.statement,
+                                 "resolve left both velocities as they were, yet this pair approaches (dot(v1 - v2, n) < 0) "
+                                 "and must leave together: check that resolve reaches the merge for an approaching pair "
+                                 "(the condition of any early return), then give both bodies the common velocity"};
+inline const Law immovable_untouched{immovable.name, immovable.statement,
+                                     "resolve left both velocities as they were, yet the movable body approaches the "
+                                     "immovable one and must take its velocity: check that resolve reaches the merge for "
+                                     "an approaching pair (the condition of any early return)"};
+
+/// True when resolve changed neither velocity, to the bit.
+inline bool untouched(const RigidBody& body1_before, const RigidBody& body2_before, const RigidBody& body1_after,
+                      const RigidBody& body2_after) {
+    return body1_before.velocity == body1_after.velocity && body2_before.velocity == body2_after.velocity;
+}
+
+/// Step 2's and step 3's laws, with the hint that fits what resolve did to an approaching pair.
+inline const Law& stick_after(bool resolve_changed_nothing) { return resolve_changed_nothing ? stick_untouched : stick; }
+inline const Law& immovable_after(bool resolve_changed_nothing) {
+    return resolve_changed_nothing ? immovable_untouched : immovable;
+}
+
 }  // namespace workbook::inelastic_laws

@@ -34,9 +34,21 @@ void expect_at_least(const Law& law, double minimum, double actual, double toler
 /// Fails when any component of `value` is NaN or infinite.
 void expect_finite(const Law& law, const Vector3& value, std::string_view unit, std::string_view situation);
 
-/// "(1.5, 0, -2)" with enough digits to tell two nearby values apart.
+/// "(1.5, 0, -2)": each number in its shortest round-trip form (std::to_chars), so two values
+/// that differ anywhere, even in the 16th digit, print differently.
 std::string format(const Vector3& v);
 std::string format(double v);
+
+/// |actual - expected| / |expected| (vectors: lengths), or NaN when that says nothing: expected
+/// zero, or a value that is not finite.
+double relative_error(double expected, double actual);
+double relative_error(const Vector3& expected, const Vector3& actual);
+
+/// The text of a failed check as the student reads it: law, case, expected and actual values,
+/// the relative error of a near miss (below 1 %) and a hint. A miss in float's precision
+/// band (7 or 8 matching digits) gets a hint about double instead of the law's own hint.
+std::string failure_message(const Law& law, std::string_view expected, std::string_view actual, std::string_view unit,
+                            std::string_view situation, double relative_error);
 
 /// One line describing a body for the "case" part of a message: "m = 2 kg, v = (3, 0, 0) m/s".
 std::string describe(const RigidBody& body);

@@ -30,7 +30,7 @@ struct Contact {
     Vector3 normal{1.0, 0.0, 0.0};  ///< unit vector from body 2 towards body 1
     std::array<ContactPoint, max_contact_points> points{};  ///< the first `point_count` entries are valid
     std::uint8_t point_count = 0;  ///< number of valid entries in `points`
-    double penetration = 0.0;  ///< deepest penetration over all points, m
+    double penetration = 0.0;  ///< overlap along the normal, m: at least every point's depth (for a box pair, the overlap of the two shadows on the normal)
 
     /// Appends a point and keeps `penetration` the deepest one; ignores points past the capacity.
     constexpr void add_point(const Vector3& position, double depth) {

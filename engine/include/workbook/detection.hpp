@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Narrow-phase collision detection: sphere-sphere and sphere-plane.
+/// Narrow-phase collision detection: sphere-sphere and sphere-plane; pairs with a box are in
+/// box_detection.hpp, and collide() dispatches to both.
 
 #include <optional>
 
@@ -24,5 +25,17 @@ std::optional<Contact> collide_sphere_plane(const RigidBody& sphere, const Rigid
 /// Dispatches on the two shapes. The indices are copied into the result; when the pair is
 /// given plane-first the bodies are swapped so that the normal convention still holds.
 std::optional<Contact> collide(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b);
+
+/// The narrow phase in two halves, for the world's loop: overlaps() decides, cheaply (no
+/// square root, nothing built), exactly when collide() would return a contact; then
+/// write_contact() fills a default-constructed Contact in place, without the copy an
+/// optional return costs (a Contact has room for four points, 184 bytes).
+bool overlaps(const RigidBody& a, const RigidBody& b);
+
+/// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
+/// Contact; same result as collide(). Returns false when the pair does not touch after all:
+/// for a pair with a box, overlaps() only compares bounding spheres and the full
+/// separating-axis test runs here.
+bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact);
 
 }  // namespace workbook

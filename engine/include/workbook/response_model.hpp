@@ -13,8 +13,17 @@ namespace workbook {
 /// Changes the velocities of the two bodies of one contact (an impulse, or a merge).
 using VelocityResponder = void (*)(RigidBody& body1, RigidBody& body2, const Contact& contact);
 
-/// Moves the two bodies of one contact apart (the projection method).
-using PositionCorrector = void (*)(RigidBody& body1, RigidBody& body2, const Contact& contact);
+/// The two knobs every position corrector takes (chapter 2, the projection method): per step
+/// it removes `fraction` of the depth beyond `slop`, that is fraction * max(depth - slop, 0).
+/// fraction 1 and slop 0 remove the whole overlap at once.
+struct PositionCorrection {
+    double fraction = 1.0;  ///< share of the depth (beyond the slop) removed per step; often called beta or percent
+    double slop = 0.0;      ///< depth left alone, m, so that resting contacts do not jitter
+};
+
+/// Moves the two bodies of one contact apart (the projection method), by the knobs given.
+using PositionCorrector = void (*)(RigidBody& body1, RigidBody& body2, const Contact& contact,
+                                   const PositionCorrection& knobs);
 
 /// A named pair of stages. Either may be null: the world then skips that stage entirely.
 struct ResponseModel {

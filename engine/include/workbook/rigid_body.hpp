@@ -72,4 +72,8 @@ RigidBody make_immovable_plane(const Vector3& unit_normal, const Vector3& point)
 /// An immovable ball, for tests and scenes that pin one body in place.
 RigidBody make_immovable_sphere(double radius, const Vector3& position);
 
+/// A movable solid box of the given mass (kg) and half extents (m), turned by `orientation`.
+RigidBody make_box(double mass, const Vector3& half_extents, const Vector3& position, const Quaternion& orientation = {},
+                   const Vector3& velocity = {});
+
 }  // namespace workbook

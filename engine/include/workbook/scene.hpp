@@ -23,6 +23,10 @@ struct Scene {
     double duration = 0.0;          ///< s
     std::vector<RigidBody> bodies;  ///< the bodies, in file order
     std::vector<std::string> body_names;  ///< parallel to bodies
+    /// Position-correction fractions to compare, from the optional "sweep" field: the figure
+    /// driver runs the scene once per value and draws the runs in one figure. A plain run
+    /// uses settings.position_correction and ignores this list.
+    std::vector<double> fraction_sweep;
 };
 
 /// A scene that cannot be used. what() reads "FILE: FIELD: PROBLEM", for example

@@ -13,7 +13,7 @@ namespace workbook {
 enum class ShapeKind : std::uint8_t {
     sphere,  ///< a ball (a circle when the scene is planar)
     plane,   ///< an infinite plane through the body's position: walls and ground
-    box,     ///< reserved for chapter 4; detection reports several contact points for it
+    box,     ///< a cuboid given by its half extents (chapter 4 on); detection reports up to four points for it
 };
 
 /// The geometry of a body, in the body's own frame.

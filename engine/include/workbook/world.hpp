@@ -5,8 +5,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "workbook/broad_phase.hpp"
 #include "workbook/contact.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
@@ -21,6 +25,18 @@ enum class Integrator : std::uint8_t {
     semi_implicit_euler,
     /// x += v dt with the old v, then v += a dt. Gains energy steadily; kept to compare against.
     explicit_euler,
+    /// x += v dt + 1/2 g dt^2, then v += g dt: the closed form of motion under constant gravity,
+    /// so free flight has no truncation error at any time step (only rounding).
+    exact_under_gravity,
+};
+
+/// When, within a step, contacts are answered.
+enum class ContactTiming : std::uint8_t {
+    /// Move every body the whole step, then answer whatever overlaps (the classic loop).
+    discrete,
+    /// Advance to the earliest time of impact of a sphere pair or a sphere and a plane (closed
+    /// form under constant gravity), answer it there, and continue with the rest of the step.
+    event,
 };
 
 /// Settings that do not change while a scene runs.
@@ -28,13 +44,56 @@ struct WorldSettings {
     double time_step = 1.0 / 240.0;  ///< s
     Vector3 gravity{};               ///< m/s^2; the zero vector turns gravity off
     Integrator integrator = Integrator::semi_implicit_euler;  ///< how integrate() advances the bodies
+    PositionCorrection position_correction{};  ///< the knobs handed to the model's position corrector
+    ContactTiming contact_timing = ContactTiming::discrete;  ///< when contacts are answered within a step
+    /// Discrete timing only: a sphere that moves more than its radius in a step is swept along
+    /// its path, so that a fast ball cannot pass through another body between two steps.
+    bool swept_spheres = true;
+    /// Stop with NonFiniteState (workbook/guards.hpp) when a stage leaves a NaN or an infinity
+    /// in a body. On by default; benchmarks turn it off.
+    bool check_finite = true;
+};
+
+/// Work a step leaves out when a scene does not need it. Each shortcut gives exactly the
+/// result of doing the work (tests compare state hashes with it on and off, over every
+/// chapter scene); only the speed differs. All are on by default; tests and benchmarks turn
+/// them off to compare.
+struct Shortcuts {
+    /// Find candidate pairs with a grid (BroadPhase) instead of testing every pair ...
+    bool broad_phase = true;
+    /// ... from this many bodies on. Measured with bench/stages.cpp (detect_grid_or_all_pairs,
+    /// the gas with four walls, CPU time): with 6 bodies testing every pair takes 266 ns and
+    /// the grid 368 ns, with 12 both about 1.2 us, with 20 the grid 2.2 us against 3.7 us.
+    std::size_t broad_phase_from = 12;
+    /// Never pair two immovable bodies (no response could move them); off, such pairs are
+    /// tested and their contacts dropped.
+    bool skip_immovable_pairs = true;
+    /// No rotation work for bodies that do not spin (angular velocity exactly zero, as for
+    /// spheres under central impulses): no orientation update, no world inertia, no
+    /// rotational terms in the probes, which are exactly zero for them.
+    bool skip_still_rotation = true;
+    /// No gravity kick when gravity is the zero vector (v + 0 dt is v).
+    bool skip_zero_gravity = true;
+    /// Measure the kinetic energy each response changes (the probe response_energy_change);
+    /// a run that does not record it (a benchmark) turns this off and the probe reads 0.
+    bool response_energy_probe = true;
+};
+
+/// Whether a stage or part of one runs for the world's scene, and why; the explain option
+/// of the workbook's run command prints one line per stage.
+struct StageUse {
+    std::string_view stage;  ///< e.g. "broad phase"
+    bool used = true;        ///< false when skipped
+    std::string why;         ///< one line, with the numbers that decided it
 };
 
 /// Steps a set of rigid bodies with the chosen integrator and the scene's response model.
 ///
 /// One step runs four stages in a fixed order, each callable on its own so that benchmarks
 /// can time them and scenes can skip what they do not need:
-///  1. integrate(): velocities from gravity, then positions and orientations from velocities;
+///  1. integrate(): velocities from gravity, then positions and orientations from velocities
+///     (a free body's rotation keeps its angular momentum, see rotation.hpp; a kinematic body,
+///     immovable but given a velocity, moves at that velocity);
 ///  2. detect():    every overlapping pair, as a Contact;
 ///  3. respond():   the model's velocity responder, once per contact;
 ///  4. correct():   the model's position corrector, once per contact.
@@ -66,16 +125,46 @@ public:
     /// The contacts found by the last detect().
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
 
+    /// The shortcuts in use.
+    [[nodiscard]] const Shortcuts& shortcuts() const { return shortcuts_; }
+    /// Turns shortcuts on or off, for tests and benchmarks; takes effect at the next stage.
+    void set_shortcuts(const Shortcuts& shortcuts) { shortcuts_ = shortcuts; }
+    /// True when the last detect() used the grid rather than testing every pair.
+    [[nodiscard]] bool used_broad_phase() const { return used_broad_phase_; }
+
+    /// Which stages this world's scene uses and which it skips, with the reason for each.
+    [[nodiscard]] std::vector<StageUse> plan() const;
+
     /// Probes of the current state, including what the last respond() did to kinetic energy.
     [[nodiscard]] Probes probes() const;
 
+    /// Names for the bodies, in scene order, used in error messages (may be left empty).
+    void name_bodies(std::vector<std::string> names) { body_names_ = std::move(names); }
+    /// The names given by name_bodies(), or an empty span.
+    [[nodiscard]] std::span<const std::string> body_names() const { return body_names_; }
+    /// Steps completed since the start.
+    [[nodiscard]] std::uint64_t steps_taken() const { return steps_; }
+
 private:
+    friend void step_with_event_timing(World& world);  // workbook/event_timing.hpp
+    friend void sweep_fast_spheres(World& world);      // workbook/swept_spheres.hpp
+    /// Throws NonFiniteState naming `stage` when check_finite is on and a body is not finite.
+    void guard(const char* stage) const;
+    /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
+    void add_contact_if_any(std::uint32_t i, std::uint32_t j);
+
     std::vector<RigidBody> bodies_;
     std::vector<Contact> contacts_;
+    BroadPhase broad_phase_;
+    std::vector<BodyPair> pairs_;
+    Shortcuts shortcuts_;
+    bool used_broad_phase_ = false;
     WorldSettings settings_;
     ResponseModel model_;
     double time_ = 0.0;
     double response_energy_change_ = 0.0;
+    std::vector<std::string> body_names_;
+    std::uint64_t steps_ = 0;
 };
 
 }  // namespace workbook

@@ -1,0 +1,251 @@
+#!/usr/bin/env python3
+"""`./workbook bench speed`: the gas of issue 12 in the workbook and in its peers, one run.
+
+For every engine (workbook, chipmunk, box2d, bullet) and every N it runs
+`workbook-gas ENGINE N STEPS` REPEAT times in its own process, and keeps the median time per
+step, the peak resident memory (each run reports its own, Linux's VmHWM, minus the same
+engine's N = 1 run, divided by N) and the relative drift of kinetic energy. It writes
+
+    OUT/speed.csv      one row per engine and N
+    OUT/speed.md       the same as a Markdown table, with the machine and the date
+    OUT/performance.md the site's Performance page (docs/CMakeLists.txt reads it from here)
+    FIGURES/speed.{svg,pdf,png}  time per step against N, log-log, in the shared style
+
+Times are processor time of the timed steps (std::clock; every engine runs on one thread),
+which waiting for a core on a shared machine does not inflate; still, take the medians and
+compare engines only within one run. Runs are interleaved (every engine at one N, then the next repetition) so that a
+burst of load from elsewhere hits all engines alike.
+"""
+
+import argparse
+import csv
+import datetime
+import math
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+BENCH = Path(__file__).resolve().parent
+STYLE = BENCH.parent / "plots" / "style.gp"
+ENGINES = ["workbook", "chipmunk", "box2d", "bullet"]
+TITLES = {"workbook": "workbook", "chipmunk": "Chipmunk 7", "box2d": "Box2D 2.4.1", "bullet": "Bullet 3.24"}
+STYLES = {"workbook": 2, "chipmunk": 3, "box2d": 4, "bullet": 12}  # line styles of plots/style.gp
+SIZES = [1000, 3000, 10000, 30000, 100000]
+PEERS_UP_TO = [10**9]  # set from --peers-up-to; the table says "not run" above it
+COLUMNS = ["engine", "n", "steps", "repeats", "ms_per_step", "ms_per_step_min", "ms_per_step_max",
+           "bytes_per_body", "energy_drift", "escaped"]
+
+
+def steps_for(n, steps):
+    """600 steps (10 s of gas) up to N = 10,000; fewer above, where one run already takes long."""
+    return steps if steps else (600 if n <= 10000 else 60)
+
+
+def run_once(gas, engine, n, steps, timeout):
+    """(fields of the printed line, peak RSS in bytes), or None when the run failed."""
+    process = subprocess.Popen([str(gas), engine, str(n), str(steps)], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + timeout
+    while True:
+        pid, status, _ = os.wait4(process.pid, os.WNOHANG)
+        if pid:
+            break
+        if time.monotonic() > deadline:
+            process.kill()
+            os.wait4(process.pid, 0)
+            print(f"  {engine} N={n}: stopped after {timeout} s", file=sys.stderr)
+            return None
+        time.sleep(0.02)
+    out, err = process.stdout.read(), process.stderr.read()
+    process.returncode = os.waitstatus_to_exitcode(status)
+    lines = [line for line in out.splitlines() if line.startswith(engine + ",")]
+    if process.returncode != 0 or not lines:
+        print(f"  {engine} N={n}: failed ({err.strip().splitlines()[-1] if err.strip() else process.returncode})",
+              file=sys.stderr)
+        return None
+    fields = lines[-1].split(",")
+    return fields, int(fields[8]) * 1024
+
+
+def available_engines(gas):
+    """The engines this workbook-gas was built with (a peer whose package is missing is absent)."""
+    found = []
+    for engine in ENGINES:
+        result = subprocess.run([str(gas), engine, "1", "0"], capture_output=True, text=True)
+        if result.returncode == 0:
+            found.append(engine)
+    return found
+
+
+def skipped_row(engine, n, steps):
+    return {"engine": engine, "n": n, "steps": steps, "repeats": 0, "ms_per_step": "nan", "ms_per_step_min": "nan",
+            "ms_per_step_max": "nan", "bytes_per_body": "nan", "energy_drift": "nan", "escaped": "nan"}
+
+
+def measure(gas, engines, sizes, repeat, steps, timeout, peers_up_to):
+    rows = []
+    baseline = {}
+    for engine in engines:
+        base = run_once(gas, engine, 1, 0, timeout)
+        baseline[engine] = base[1] if base else 0
+    for n in sizes:
+        s = steps_for(n, steps)
+        times = {e: [] for e in engines}
+        last = {}
+        for _ in range(repeat):
+            for engine in engines:
+                if engine in last and last[engine] is None:
+                    continue  # failed or timed out once at this N: do not wait again
+                if engine != "workbook" and n > peers_up_to:
+                    continue
+                result = run_once(gas, engine, n, s, timeout)
+                last[engine] = result
+                if result:
+                    times[engine].append((float(result[0][3]), result))
+        for engine in engines:
+            if not times[engine]:
+                rows.append(skipped_row(engine, n, s))
+                continue
+            ms = [t for t, _ in times[engine]]
+            fields, rss = times[engine][-1][1]
+            peak = max(r[1] for _, r in times[engine])
+            rows.append({"engine": engine, "n": n, "steps": s, "repeats": len(ms),
+                         "ms_per_step": f"{statistics.median(ms):.6g}", "ms_per_step_min": f"{min(ms):.6g}",
+                         "ms_per_step_max": f"{max(ms):.6g}",
+                         "bytes_per_body": f"{max(peak - baseline[engine], 0) / n:.0f}",
+                         "energy_drift": fields[6], "escaped": fields[7]})
+            print(f"  {engine:9} N={n:6}: {rows[-1]['ms_per_step']} ms/step (median of {len(ms)}), "
+                  f"{rows[-1]['bytes_per_body']} B/body, drift {fields[6]}", file=sys.stderr)
+    return rows
+
+
+def growth(rows, engine):
+    """Exponent k of time ~ N^k between the smallest and the largest N the engine ran."""
+    points = [(r["n"], float(r["ms_per_step"])) for r in rows if r["engine"] == engine and r["repeats"]]
+    if len(points) < 2:
+        return float("nan")
+    (n0, t0), (n1, t1) = points[0], points[-1]
+    return math.log(t1 / t0) / math.log(n1 / n0)
+
+
+def machine():
+    model = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{model}, {os.cpu_count()} logical cores, {platform.system()} {platform.release()}"
+
+
+def markdown(rows, engines, sizes, repeat, when):
+    lines = [f"Measured {when} on {machine()}; each time is the median of {repeat} runs "
+             "(processor time, each run in its own process; the machine is shared, so compare engines within this table only).", ""]
+    head = "| N | steps |" + "".join(f" {TITLES[e]} ms/step |" for e in engines)
+    lines += [head, "|" + "---|" * (2 + len(engines))]
+    by = {(r["engine"], r["n"]): r for r in rows}
+    for n in sizes:
+        cells = [f"{n:,}", str(by[(engines[0], n)]["steps"])]
+        for e in engines:
+            r = by[(e, n)]
+            cells.append(("not run" if e != "workbook" and n > PEERS_UP_TO[0] else "failed") if not r["repeats"]
+                         else f"{float(r['ms_per_step']):.3g}")
+        lines.append("| " + " | ".join(cells) + " |")
+    lines.append("| growth with N (smallest to largest N run) | |" + "".join(f" N^{growth(rows, e):.2f} |" for e in engines))
+    def largest_run(e):
+        done = [r for r in rows if r["engine"] == e and r["repeats"]]
+        return f"{done[-1]['bytes_per_body']} (N = {done[-1]['n']:,})" if done else "-"
+    lines.append("| memory, bytes/body, at the largest N run | |" + "".join(f" {largest_run(e)} |" for e in engines))
+    first = sizes[0]
+    lines.append(f"| energy drift at N = {first:,}, {by[(engines[0], first)]['steps']} steps | |" + "".join(
+        f" {float(by[(e, first)]['energy_drift']):.1e} |" if by[(e, first)]["repeats"] else " - |" for e in engines))
+    return "\n".join(lines) + "\n"
+
+
+def figure(rows, figures, engines):
+    figures.mkdir(parents=True, exist_ok=True)
+    # One inline data block per engine, so that each engine's points join into one line.
+    blocks, plots = [], []
+    for e in engines:
+        points = [f"{r['n']},{r['ms_per_step']}" for r in rows if r["engine"] == e and r["repeats"]]
+        blocks += [f"${e} << EOD", *points, "EOD"]
+        plots.append(f"${e} using 1:2 with linespoints ls {STYLES[e]} pt 7 ps 0.8 title '{TITLES[e]}'")
+    body = "\n".join([
+        "set logscale xy", "set format x '10^{%T}'", "set format y '10^{%T}'",
+        "set xlabel 'N / bodies' font label_font", "set ylabel 'time per step / ms' font label_font",
+        "set title 'The 2D gas of issue 12: time per step against N' font title_font",
+        "set key inside top left vertical Left reverse",
+        "plot " + ", ".join(plots)])
+    script = blocks[:]
+    for ext in ["svg", "pdf", "png"]:
+        script += ["reset", f"load '{STYLE}'", f"eval use_{ext}", "set datafile separator ','",
+                   f"set output '{figures / ('speed.' + ext)}'", body, "unset output"]
+    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+    if result.returncode != 0 or result.stderr.strip():
+        raise RuntimeError(f"gnuplot:\n{result.stderr.strip()}")
+
+
+PAGE = """# Performance {{#performance}}
+
+How fast the workbook's engine steps, side by side with the engines people would pick
+instead, on one machine in one run. The scene is the 2D gas of issue 12: N discs of radius
+0.05 m and mass 1 kg in a square box of side \\f$L = 10\\sqrt{{N/1000}}\\f$ m with four walls,
+velocities uniform in [-5, 5] m/s, \\f$e = 1\\f$, no gravity, time step 1/60 s, started on a
+grid (`bench/gas.cpp`; each peer's set-up is in `bench/gas_<engine>.cpp`). Reproduce with
+`./workbook bench speed`.
+
+{table}
+Memory is the peak resident size of the run minus that of the same engine with one body,
+divided by N. Energy drift is \\f$|E_\\text{{end}} - E_\\text{{start}}| / E_\\text{{start}}\\f$ of
+the kinetic energy: the workbook's elastic impulse keeps it at rounding level, the peers'
+iterative solvers (in single precision for Box2D and Bullet) do not.
+
+\\image html bench/speed.svg "Time per step against the number of bodies N, log-log: a slope of 1 is linear cost."
+"""
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--gas", required=True, help="the workbook-gas executable")
+    parser.add_argument("--out", required=True, type=Path, help="folder for speed.csv, speed.md, performance.md")
+    parser.add_argument("--figures", type=Path, help="folder for speed.svg/pdf/png (default: OUT)")
+    parser.add_argument("--sizes", type=lambda s: [int(x) for x in s.split(",")], default=SIZES)
+    parser.add_argument("--engines", type=lambda s: s.split(","), default=None)
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--steps", type=int, default=0, help="steps per run (default 600 up to N = 10,000, then 60)")
+    parser.add_argument("--timeout", type=float, default=300.0, help="seconds before one run is stopped")
+    parser.add_argument("--peers-up-to", type=int, default=10**9,
+                        help="run the peers only up to this N (on a busy machine they take minutes beyond)")
+    parser.add_argument("--no-figure", action="store_true")
+    args = parser.parse_args()
+
+    engines = args.engines or available_engines(args.gas)
+    missing = [e for e in ENGINES if e not in engines]
+    if missing and not args.engines:
+        print(f"bench: not built with {', '.join(missing)} (their Debian packages are missing)", file=sys.stderr)
+    when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    PEERS_UP_TO[0] = args.peers_up_to
+    rows = measure(args.gas, engines, args.sizes, args.repeat, args.steps, args.timeout, args.peers_up_to)
+
+    args.out.mkdir(parents=True, exist_ok=True)
+    csv_path = args.out / "speed.csv"
+    with open(csv_path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS)
+        writer.writeheader()
+        writer.writerows(rows)
+    table = markdown(rows, engines, args.sizes, args.repeat, when)
+    (args.out / "speed.md").write_text(table)
+    (args.out / "performance.md").write_text(PAGE.format(table=table))
+    if not args.no_figure:
+        figure(rows, args.figures or args.out, engines)
+    print(table)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,100 @@
+// Google Benchmark micro benchmarks of each stage of World::step(), on the gas of issue 12.
+//   build/dev/bench/workbook-stages [--benchmark_filter=detect]
+// Each stage is timed on its own, repeatedly on one state, which is what the stage costs
+// inside a step (a step's state changes, its size does not).
+#include <benchmark/benchmark.h>
+
+#include "gas_world.hpp"
+#include "workbook/probes.hpp"
+
+namespace {
+
+using workbook::World;
+using workbook::bench::make_gas;
+using workbook::bench::make_gas_world;
+
+World warm_gas(benchmark::State& state) {
+    World world = make_gas_world(make_gas(static_cast<std::uint32_t>(state.range(0))));
+    for (int i = 0; i < 10; ++i) world.step();
+    return world;
+}
+
+void integrate(benchmark::State& state) {
+    World world = warm_gas(state);
+    for (auto _ : state) world.integrate();
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void detect(benchmark::State& state) {
+    World world = warm_gas(state);
+    for (auto _ : state) {
+        world.detect();
+        benchmark::DoNotOptimize(world.contacts().data());
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+/// detect() with the grid forced on (range 1 = 1) or every pair tested (0): where the two
+/// cross is World's Shortcuts::broad_phase_from.
+void detect_grid_or_all_pairs(benchmark::State& state) {
+    World world = warm_gas(state);
+    world.set_shortcuts({.broad_phase = state.range(1) == 1, .broad_phase_from = 0});
+    for (auto _ : state) {
+        world.detect();
+        benchmark::DoNotOptimize(world.contacts().data());
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+/// step() with one shortcut off (range 1: 0 none, 1 immovable pairs, 2 still rotation,
+/// 3 zero gravity, 4 energy probe on, 5 broad phase): what each shortcut buys on the gas.
+void step_with_one_shortcut_off(benchmark::State& state) {
+    World world = warm_gas(state);
+    workbook::Shortcuts shortcuts;
+    shortcuts.response_energy_probe = false;  // what the gas driver runs with
+    switch (state.range(1)) {
+        case 1: shortcuts.skip_immovable_pairs = false; break;
+        case 2: shortcuts.skip_still_rotation = false; break;
+        case 3: shortcuts.skip_zero_gravity = false; break;
+        case 4: shortcuts.response_energy_probe = true; break;
+        case 5: shortcuts.broad_phase = false; break;
+        default: break;
+    }
+    world.set_shortcuts(shortcuts);
+    for (auto _ : state) {
+        world.step();
+        benchmark::DoNotOptimize(world.probes());
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void respond(benchmark::State& state) {
+    World world = warm_gas(state);
+    world.detect();
+    for (auto _ : state) world.respond();
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void probes(benchmark::State& state) {
+    World world = warm_gas(state);
+    for (auto _ : state) benchmark::DoNotOptimize(world.probes());
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void step(benchmark::State& state) {
+    World world = warm_gas(state);
+    for (auto _ : state) world.step();
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+}  // namespace
+
+// Two bodies is where a broad phase may cost more than it saves; 1,000 and 10,000 are the gas.
+BENCHMARK(integrate)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(detect)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(detect_grid_or_all_pairs)->ArgsProduct({{2, 8, 16, 32, 64, 128}, {0, 1}});
+BENCHMARK(step_with_one_shortcut_off)->ArgsProduct({{1000}, {0, 1, 2, 3, 4, 5}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(respond)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(probes)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(step)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_MAIN();

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""One scene under every responder, for the lecture that explains why the later chapters exist.
+
+For each scene in plots/comparison/ (a ball dropped onto the ground, two carts meeting) this
+asks the simulator which responders it has (`workbook-sim responders`: `none` and every
+chapter's, in the order of chapters/response_models.cpp, so a new chapter joins by itself),
+runs the scene under each with --trajectory and --csv, and draws:
+
+- <scene>-energy.{svg,pdf,png}: the total energy over time, one curve per responder;
+- <scene>-strip.{svg,pdf,png}: one strobe picture per responder (plots/strobe.py), all in
+  the same box and scale, stacked (wide scenes) or side by side (tall ones).
+
+The CSV files drawn from stay beside them: <scene>.<responder>.csv, .trajectory.csv and
+.trajectory.contacts.csv.
+
+    compare.py build/dev/book/figures/comparison --sim build/dev/tools/workbook-sim
+"""
+
+import argparse
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import motion
+import strobe
+
+SCENES = sorted((motion.PLOTS / "comparison").glob("*.json"))
+RESPONDER_COLOURS = ["#303030", "#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9"]
+
+
+def responders(simulator):
+    result = subprocess.run([str(simulator), "responders"], capture_output=True, text=True, check=True)
+    return [line.strip() for line in result.stdout.splitlines() if line.strip()]
+
+
+def run_all(simulator, path, out):
+    """{responder: (Trajectory, contacts, series csv path)} for every responder."""
+    spec = json.loads(path.read_text())
+    runs = {}
+    for name in responders(simulator):
+        scene_file = out / f"{path.stem}.{name}.scene.json"
+        scene_file.write_text(json.dumps(dict(spec, responder=name), indent=1))
+        series = out / f"{path.stem}.{name}.csv"
+        t, c = motion.simulate(simulator, scene_file, out / f"{path.stem}.{name}.trajectory.csv",
+                               motion.stride_for(spec), series)
+        scene_file.unlink()
+        runs[name] = (motion.Trajectory(t), motion.read_contacts(c), series)
+    return runs
+
+
+def energy_commands(scene, runs):
+    totals = [v for _, _, series in runs.values() for v in motion.read_series(series)["total"]]
+    lo, hi = min(totals + [0.0]), max(totals + [0.0])
+    span = hi - lo or 1.0
+    g = [f"set title {motion.quote(scene.title + ': total energy under each responder')} font title_font noenhanced",
+         "set xlabel 't / s'", "set ylabel 'E / J'", f"set xrange [0:{scene.duration!r}]", "set format x '%g'",
+         f"set yrange [{lo - (0.05 * span if lo < 0 else 0)!r}:{hi + 0.1 * span!r}]"]
+    plot = []
+    for n, (name, (_, _, series)) in enumerate(runs.items()):
+        colour = RESPONDER_COLOURS[n % len(RESPONDER_COLOURS)]
+        plot.append(f"{motion.quote(str(series))} skip 1 using 1:5 with lines lc rgb '{colour}' lw 3 "
+                    f"title {motion.quote(name)}")
+    return g + ["plot " + ", ".join(plot)]
+
+
+def strip_commands(scene, runs):
+    trajectories = [(t, c) for t, c, _ in runs.values()]
+    view = motion.choose_view(scene, [t for t, _ in trajectories])
+    extent = strobe.data_extent(scene, trajectories, view)
+    n = len(runs)
+    # Wide scenes stack their panels; tall ones stand them side by side. Past three responders
+    # the panels wrap into a grid (two columns of wide panels, three of tall ones), so that
+    # each stays large enough to read as more chapters add responders.
+    across = (extent[1] - extent[0]) < 1.5 * (extent[3] - extent[2])
+    if n <= 3:
+        rows, columns = (1, n) if across else (n, 1)
+    else:
+        columns = 3 if across else 2
+        rows = -(-n // columns)
+    aspect = (4.0 / columns) / (3.0 * 0.85 / rows)
+    box = strobe.picture_box(scene, trajectories, view, aspect=aspect)
+    title = f"{scene.title} under each responder\n{strobe.strobe_note(scene, view)}"
+    g = [f"set multiplot layout {rows},{columns} "
+         f"title {motion.quote(title)} font title_font noenhanced", "set key off"]
+    for name, (trajectory, contacts, _) in runs.items():
+        g += strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, f"responder: {name}", key=False,
+                                    note=False)
+    return g + ["unset multiplot"]
+
+
+def draw(commands, out_stem, strip):
+    script = []
+    for ext in motion.FORMATS:
+        script += ["reset", f"load {motion.quote(str(motion.STYLE))}", f"eval use_{'strip_' if strip else ''}{ext}",
+                   f"set output {motion.quote(str(out_stem) + '.' + ext)}"] + commands + ["unset output"]
+    motion.run_gnuplot("\n".join(script) + "\n", out_stem.name)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("out", type=Path, help="folder for the figures and their CSV files")
+    parser.add_argument("--sim", type=Path, default=motion.SOURCE / "build/dev/tools/workbook-sim")
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    failures = 0
+    for path in SCENES:
+        try:
+            runs = run_all(args.sim, path, args.out)
+            scene = motion.Scene(path)
+            print(f"compare: {path.name} under {', '.join(runs)} -> {args.out / path.stem}-{{energy,strip}}.*", flush=True)
+            draw(energy_commands(scene, runs), args.out / f"{path.stem}-energy", strip=False)
+            draw(strip_commands(scene, runs), args.out / f"{path.stem}-strip", strip=True)
+        except (RuntimeError, OSError, ValueError, KeyError, subprocess.CalledProcessError) as error:
+            print(f"compare: error: {error}", file=sys.stderr)
+            failures += 1
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,223 @@
+// The site's motion player (issue 14): every <div class="wb-motion" data-chapter="ID"> becomes
+// a player of that chapter's scenes: the bodies moving in the same view as the strobe
+// pictures and animations, play / pause, a scrub bar, a speed choice, and the scene's energy
+// and momentum over time with a cursor that moves in step. Plain JavaScript and SVG; the
+// scenes' data come from <scene>.player.js files loaded by <script> (plots/player_data.py),
+// so nothing is fetched and the page works offline from a folder.
+(function () {
+  "use strict";
+  var NS = "http://www.w3.org/2000/svg";
+  var SPEEDS = [0.1, 0.25, 0.5, 1, 2];
+  var TICK_MS = 40;
+
+  function el(tag, attrs, parent, text) {
+    var node = document.createElementNS(NS, tag);
+    for (var k in attrs) node.setAttribute(k, attrs[k]);
+    if (text !== undefined) node.textContent = text;
+    if (parent) parent.appendChild(node);
+    return node;
+  }
+  function html(tag, attrs, parent, text) {
+    var node = document.createElement(tag);
+    for (var k in attrs) node.setAttribute(k, attrs[k]);
+    if (text !== undefined) node.textContent = text;
+    if (parent) parent.appendChild(node);
+    return node;
+  }
+  function nearest(times, t) {
+    var lo = 0, hi = times.length - 1;
+    while (lo < hi) { var mid = (lo + hi) >> 1; if (times[mid] < t) lo = mid + 1; else hi = mid; }
+    if (lo > 0 && Math.abs(times[lo - 1] - t) <= Math.abs(times[lo] - t)) lo -= 1;
+    return lo;
+  }
+  function niceStep(span, count) {
+    var raw = span / count, power = Math.pow(10, Math.floor(Math.log10(raw)));
+    var steps = [1, 2, 2.5, 5, 10];
+    for (var i = 0; i < steps.length; i++) if (steps[i] * power >= raw * 0.999) return steps[i] * power;
+    return 10 * power;
+  }
+  function label(v) { var s = Math.abs(v) < 1e-12 ? "0" : String(+v.toPrecision(4)); return s.replace("-", "\u2212"); }
+
+  var STYLE = ".wb-motion{border:1px solid #ccc;border-radius:6px;padding:10px;margin:1em 0;background:#fff;color:#202020;font-family:'DejaVu Sans',sans-serif}" +
+    ".wb-motion svg{display:block;width:100%;height:auto;background:#fff}" +
+    ".wb-motion .wb-bar{display:flex;flex-wrap:wrap;align-items:center;gap:10px;margin:6px 0}" +
+    ".wb-motion .wb-bar input[type=range]{flex:1;min-width:200px}" +
+    ".wb-motion .wb-charts{display:flex;gap:10px}.wb-motion .wb-charts>div{flex:1}" +
+    ".wb-motion button{min-width:5.5em}.wb-motion .wb-time{font-variant-numeric:tabular-nums;min-width:8em}";
+
+  function Player(root, scenes) {
+    this.root = root; this.scenes = scenes; this.playing = false; this.t = 0; this.speed = 1;
+    root.innerHTML = "";
+    var bar = html("div", {"class": "wb-bar"}, root);
+    html("label", {}, bar, "Scene ");
+    this.select = html("select", {"class": "wb-scene", "aria-label": "scene"}, bar);
+    var self = this;
+    scenes.forEach(function (s, i) { html("option", {value: i}, self.select, s.title); });
+    this.select.addEventListener("change", function () { self.load(+self.select.value); });
+    this.stageBox = html("div", {}, root);
+    var controls = html("div", {"class": "wb-bar"}, root);
+    this.button = html("button", {"class": "wb-play", type: "button"}, controls, "\u25B6 play");
+    this.button.addEventListener("click", function () { self.toggle(); });
+    this.scrub = html("input", {"class": "wb-scrub", type: "range", min: 0, max: 1000, value: 0, step: 1, "aria-label": "time"}, controls);
+    this.scrub.addEventListener("input", function () { self.pause(); self.show(self.scrub.value / 1000 * self.scene.duration); });
+    this.timeText = html("span", {"class": "wb-time"}, controls);
+    html("label", {}, controls, "speed ");
+    this.speedSelect = html("select", {"class": "wb-speed", "aria-label": "speed"}, controls);
+    SPEEDS.forEach(function (v) { var o = html("option", {value: v}, self.speedSelect, v + "\u00D7"); if (v === 1) o.selected = true; });
+    this.speedSelect.addEventListener("change", function () { self.speed = +self.speedSelect.value; self.showSpeed(); });
+    this.speedText = html("span", {"class": "wb-speed-text"}, controls);
+    this.charts = html("div", {"class": "wb-charts"}, root);
+    this.load(0);
+    setInterval(function () { self.tick(); }, TICK_MS);
+  }
+
+  Player.prototype.load = function (index) {
+    this.pause();
+    var s = this.scene = this.scenes[index];
+    var W = 960, H = 540, b = s.box;
+    var sx = function (x) { return (x - b[0]) / (b[1] - b[0]) * W; };
+    var sy = function (y) { return H - (y - b[2]) / (b[3] - b[2]) * H; };
+    this.sx = sx; this.sy = sy;
+    this.stageBox.innerHTML = "";
+    var svg = el("svg", {viewBox: "0 0 " + W + " " + (H + 40), "class": "wb-stage", role: "img",
+                         "aria-label": s.title + ", " + s.view.name}, this.stageBox);
+    // Grid every round metre step, labelled on the edges.
+    var step = niceStep(b[1] - b[0], 8), g = el("g", {stroke: "#E4E4E4", "stroke-width": 1}, svg);
+    for (var x = Math.ceil(b[0] / step) * step; x <= b[1]; x += step) {
+      el("line", {x1: sx(x), x2: sx(x), y1: 0, y2: H}, g);
+      el("text", {x: sx(x), y: H + 18, "text-anchor": "middle", "font-size": 14, fill: "#404040", stroke: "none"}, svg, label(x));
+    }
+    for (var y = Math.ceil(b[2] / step) * step; y <= b[3]; y += step) {
+      el("line", {x1: 0, x2: W, y1: sy(y), y2: sy(y)}, g);
+      el("text", {x: 4, y: sy(y) - 3, "font-size": 14, fill: "#404040"}, svg, label(y));
+    }
+    el("text", {x: W / 2, y: H + 36, "text-anchor": "middle", "font-size": 15}, svg, s.view.x + "   (" + s.view.name + "; vertical: " + s.view.y + ")");
+    s.planes.forEach(function (p) {
+      el("polygon", {points: p.band.map(function (q) { return sx(q[0]) + "," + sy(q[1]); }).join(" "), fill: "#E4E4E4"}, svg);
+      el("line", {x1: sx(p.line[0][0]), y1: sy(p.line[0][1]), x2: sx(p.line[1][0]), y2: sy(p.line[1][1]), stroke: "#505050", "stroke-width": 3}, svg);
+    });
+    this.shapes = s.runs.map(function (run) {
+      return s.bodies.map(function (body) {
+        var colour = run.student ? "#CC79A7" : body.colour;
+        var attrs = {stroke: colour, "stroke-width": run.student ? 3.5 : 2.5, fill: run.student ? "none" : colour,
+                     "fill-opacity": 0.25};
+        if (run.student) attrs["stroke-dasharray"] = "10 6";
+        return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg)};
+      });
+    });
+    this.touches = s.runs.map(function (run) {
+      return run.touches.map(function (c, n) {
+        var colour = run.student ? "#CC79A7" : "#B2182B", group = el("g", {visibility: "hidden"}, svg);
+        var x1 = sx(c.from[0]), y1 = sy(c.from[1]), x2 = sx(c.to[0]), y2 = sy(c.to[1]);
+        var a = Math.atan2(y2 - y1, x2 - x1), h = 14;
+        el("line", {x1: x1, y1: y1, x2: x2, y2: y2, stroke: colour, "stroke-width": 4}, group);
+        el("polygon", {points: [x2 + h * Math.cos(a), y2 + h * Math.sin(a), x2 + h * Math.cos(a + 2.4), y2 + h * Math.sin(a + 2.4),
+                                x2 + h * Math.cos(a - 2.4), y2 + h * Math.sin(a - 2.4)].join(" "), fill: colour}, group);
+        el("text", {x: x2 + (Math.cos(a) >= -0.3 ? 12 : -12), y: y2 - 10 + 24 * n, "text-anchor": Math.cos(a) >= -0.3 ? "start" : "end",
+                    "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, group,
+           c.text + " at t = " + label(c.t) + " s");
+        return {t: c.t, node: group};
+      });
+    });
+    this.clock = el("text", {x: 12, y: 28, "font-size": 22, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, svg);
+    this.charts.innerHTML = "";
+    this.cursors = [this.chart("Energy", "E / J", s.series.energy), this.chart("Momentum", "p / (kg m/s)", s.series.momentum)];
+    this.showSpeed();
+    this.show(0);
+  };
+
+  Player.prototype.chart = function (title, unit, curves) {
+    var s = this.scene, W = 470, H = 270, L = 70, R = 12, T = 48, B = 46;
+    var box = html("div", {}, this.charts);
+    var svg = el("svg", {viewBox: "0 0 " + W + " " + H, "class": "wb-chart", role: "img", "aria-label": title + " over time"}, box);
+    var lo = 0, hi = 0;
+    curves.forEach(function (c) { c.v.forEach(function (v) { if (isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); } }); });
+    var span = (hi - lo) || 1; hi += 0.08 * span; if (lo < 0) lo -= 0.08 * span;
+    var t0 = 0, t1 = s.duration;
+    var px = function (t) { return L + (t - t0) / (t1 - t0) * (W - L - R); };
+    var py = function (v) { return H - B - (v - lo) / (hi - lo) * (H - T - B); };
+    el("text", {x: (L + W - R) / 2, y: 20, "text-anchor": "middle", "font-size": 16}, svg, title);
+    var ts = niceStep(t1 - t0, 5), vs = niceStep(hi - lo, 5);
+    for (var t = 0; t <= t1 + 1e-12; t += ts) {
+      el("line", {x1: px(t), x2: px(t), y1: T, y2: H - B, stroke: "#E4E4E4"}, svg);
+      el("text", {x: px(t), y: H - B + 18, "text-anchor": "middle", "font-size": 13}, svg, label(t));
+    }
+    for (var v = Math.ceil(lo / vs) * vs; v <= hi; v += vs) {
+      el("line", {x1: L, x2: W - R, y1: py(v), y2: py(v), stroke: "#E4E4E4"}, svg);
+      el("text", {x: L - 6, y: py(v) + 4, "text-anchor": "end", "font-size": 13}, svg, label(v));
+    }
+    el("text", {x: (L + W - R) / 2, y: H - 8, "text-anchor": "middle", "font-size": 14}, svg, "t / s");
+    el("text", {x: 16, y: (T + H - B) / 2, "text-anchor": "middle", "font-size": 14, transform: "rotate(-90 16 " + (T + H - B) / 2 + ")"}, svg, unit);
+    el("polyline", {points: L + "," + T + " " + L + "," + (H - B) + " " + (W - R) + "," + (H - B), fill: "none", stroke: "#404040"}, svg);
+    curves.forEach(function (c, n) {
+      var pts = c.v.map(function (v, i) { return px(s.series.t[i]).toFixed(2) + "," + py(v).toFixed(2); }).join(" ");
+      el("polyline", {points: pts, fill: "none", stroke: c.colour, "stroke-width": c.name === "total" ? 6 : 2.5,
+                      "stroke-opacity": c.name === "total" ? 0.6 : 1}, svg);
+      // The key sits between the title and the plot, clear of the curves.
+      el("line", {x1: L + 10 + 110 * n, x2: L + 34 + 110 * n, y1: T - 14, y2: T - 14, stroke: c.colour, "stroke-width": 4}, svg);
+      el("text", {x: L + 40 + 110 * n, y: T - 9, "font-size": 13}, svg, c.name);
+    });
+    var cursor = el("line", {"class": "wb-cursor", x1: px(0), x2: px(0), y1: T, y2: H - B, stroke: "#B2182B", "stroke-width": 2.5}, svg);
+    return {node: cursor, x: px};
+  };
+
+  Player.prototype.showSpeed = function () {
+    var f = this.scene.slow_motion * 1 / this.speed, text;
+    text = Math.abs(f - 1) < 1e-9 ? "real time" : f > 1 ? "slow motion \u00D7" + label(f) : "fast motion \u00D7" + label(1 / f);
+    this.speedText.textContent = "(" + text + (this.speed === 1 ? ", as the video" : "") + ")";
+  };
+
+  Player.prototype.show = function (t) {
+    var s = this.scene, self = this;
+    this.t = Math.max(0, Math.min(t, s.duration));
+    s.runs.forEach(function (run, r) {
+      var k = nearest(run.t, self.t);
+      run.shapes[k].forEach(function (shape, i) {
+        var nodes = self.shapes[r][i];
+        if (shape.c) {
+          nodes.circle.setAttribute("cx", self.sx(shape.c[0])); nodes.circle.setAttribute("cy", self.sy(shape.c[1]));
+          nodes.circle.setAttribute("r", shape.c[2] / (s.box[1] - s.box[0]) * 960);
+        } else {
+          nodes.polygon.setAttribute("points", shape.p.map(function (q) { return self.sx(q[0]) + "," + self.sy(q[1]); }).join(" "));
+        }
+      });
+      self.touches[r].forEach(function (c) { c.node.setAttribute("visibility", c.t <= self.t + 1e-12 ? "visible" : "hidden"); });
+    });
+    this.cursors.forEach(function (c) { c.node.setAttribute("x1", c.x(self.t)); c.node.setAttribute("x2", c.x(self.t)); });
+    this.clock.textContent = "t = " + this.t.toFixed(4) + " s";
+    this.timeText.textContent = "t = " + this.t.toFixed(4) + " s";
+    this.scrub.value = Math.round(this.t / s.duration * 1000);
+    this.root.setAttribute("data-time", this.t.toFixed(6));
+  };
+
+  Player.prototype.play = function () {
+    if (this.t >= this.scene.duration) this.show(0);
+    this.playing = true; this.last = Date.now(); this.button.textContent = "\u275A\u275A pause";
+    this.root.setAttribute("data-playing", "true");
+  };
+  Player.prototype.pause = function () {
+    this.playing = false; if (this.button) this.button.textContent = "\u25B6 play";
+    this.root.setAttribute("data-playing", "false");
+  };
+  Player.prototype.toggle = function () { if (this.playing) this.pause(); else this.play(); };
+  Player.prototype.tick = function () {
+    if (!this.playing) return;
+    var now = Date.now(), dt = (now - this.last) / 1000; this.last = now;
+    this.show(this.t + dt * this.speed / this.scene.slow_motion);
+    if (this.t >= this.scene.duration) this.pause();
+  };
+
+  function start() {
+    var style = document.createElement("style"); style.textContent = STYLE; document.head.appendChild(style);
+    var all = window.WorkbookMotion || [];
+    Array.prototype.forEach.call(document.querySelectorAll(".wb-motion"), function (root) {
+      var chapter = root.getAttribute("data-chapter");
+      var scenes = all.filter(function (s) { return s.chapter === chapter; });
+      if (!scenes.length) { root.textContent = "No motion data for chapter " + chapter + " (run ./workbook figures)."; return; }
+      var player = new Player(root, scenes);
+      root.wbPlayer = player;
+      if (/autoplay/.test(window.location.hash)) player.play();
+    });
+  }
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start); else start();
+})();

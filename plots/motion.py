@@ -1,0 +1,463 @@
+"""What the motion pictures share: reading trajectories, choosing the view, and drawing bodies.
+
+The strobe pictures (strobe.py), the animations (animate.py) and the cross-chapter comparison
+(compare.py) all draw from the files `workbook-sim run --trajectory` writes (columns in
+docs/scene-format.md); nothing here runs the simulation except `simulate`, which asks the
+simulator for those files. Shapes (radius, plane normal, box half extents) come from the
+scene file, positions and orientations from the trajectory.
+
+Drawing is gnuplot `set object` / `set arrow` / `set label` commands in the plot's own
+coordinates, with `set size ratio -1` so that one metre is as long across as up and circles
+stay circles.
+"""
+
+import csv
+import json
+import math
+import subprocess
+from pathlib import Path
+
+PLOTS = Path(__file__).resolve().parent
+SOURCE = PLOTS.parent
+STYLE = PLOTS / "style.gp"
+FORMATS = ["svg", "pdf", "png"]
+AXES = "xyz"
+
+# One colour per body, in scene order (style.gp's Okabe-Ito palette); the student's bodies in
+# an overlay are all drawn in STUDENT_COLOUR, dashed.
+BODY_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#E69F00", "#56B4E9", "#B8A000"]
+STUDENT_COLOUR = "#CC79A7"
+GROUND_FILL = "#E4E4E4"
+GROUND_LINE = "#505050"
+CONTACT_COLOUR = "#B2182B"  # style.gp's c_drop: what the response did
+
+# A scene runs in well under a second; a student's endless loop must not hang the figures.
+SCENE_TIME_LIMIT = 120
+
+
+def quote(text):
+    """A gnuplot double-quoted string; a newline becomes gnuplot's own \\n (a line break)."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+def simulate(simulator, scene, trajectory, stride=1, csv_path=None):
+    """Runs `simulator run scene --trajectory trajectory`; returns (trajectory, contacts) paths."""
+    command = [str(simulator), "run", str(scene), "--trajectory", str(trajectory), "--stride", str(stride), "--quiet"]
+    if csv_path:
+        command += ["--csv", str(csv_path)]
+    try:
+        result = subprocess.run(command, capture_output=True, text=True, timeout=SCENE_TIME_LIMIT)
+    except subprocess.TimeoutExpired:
+        raise RuntimeError(f"{simulator} ran {scene} for more than {SCENE_TIME_LIMIT} s and was stopped "
+                           "(an endless loop in the responder?)") from None
+    if result.returncode != 0:
+        raise RuntimeError(f"{simulator} failed on {scene}:\n{result.stderr.strip()}")
+    return Path(trajectory), contacts_path(trajectory)
+
+
+def contacts_path(trajectory):
+    trajectory = Path(trajectory)
+    stem = trajectory.name[:-4] if trajectory.name.endswith(".csv") else trajectory.name
+    return trajectory.with_name(stem + ".contacts.csv")
+
+
+SLOW_MOTION = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000]
+SHORTEST_FILM = 4.0  # s
+
+
+def slow_motion_factor(duration):
+    """How much slower than real time a scene is filmed (and played in the site): the smallest
+    round factor that makes the film last at least SHORTEST_FILM seconds."""
+    return next((f for f in SLOW_MOTION if duration * f >= SHORTEST_FILM - 1e-9), SLOW_MOTION[-1])
+
+
+def stride_for(scene_spec, frames=1500):
+    """A stride keeping about `frames` recorded frames (every step for short runs)."""
+    steps = round(scene_spec["duration"] / scene_spec["time_step"])
+    return max(1, math.ceil(steps / frames))
+
+
+class Scene:
+    """The scene file's static part: names, shapes, which bodies are immovable, gravity."""
+
+    def __init__(self, path, spec=None):
+        self.path = Path(path)
+        spec = spec if spec is not None else json.loads(self.path.read_text())
+        self.spec = spec
+        self.title = spec["title"]
+        self.responder = spec["responder"]
+        self.duration = spec["duration"]
+        self.gravity = [float(g) for g in spec.get("gravity", [0, 0, 0])]
+        self.bodies = spec["bodies"]
+        self.names = [b.get("name", f"bodies[{i}]") for i, b in enumerate(self.bodies)]
+
+
+class Trajectory:
+    """The frames of a trajectory file: times, and per frame per body (position, quaternion)."""
+
+    def __init__(self, path):
+        frames = {}
+        with open(path, newline="") as f:
+            for row in csv.DictReader(f):
+                frame = frames.setdefault(int(row["frame"]), (float(row["t"]), []))
+                frame[1].append(([float(row[c]) for c in "xyz"], [float(row[c]) for c in ("qw", "qx", "qy", "qz")],
+                                 [float(row[c]) for c in ("vx", "vy", "vz")]))
+        self.steps = sorted(frames)
+        self.times = [frames[s][0] for s in self.steps]
+        self.states = [frames[s][1] for s in self.steps]
+        for t, states in zip(self.times, self.states):
+            for position, q, v in states:
+                if not all(math.isfinite(x) for x in position + q + v):
+                    raise ValueError(f"{path}: a body's state is not finite at t = {t} s (NaN or infinity)")
+
+    def index_at(self, t):
+        """The recorded frame nearest to time t."""
+        lo, hi = 0, len(self.times) - 1
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if self.times[mid] < t:
+                lo = mid + 1
+            else:
+                hi = mid
+        if lo > 0 and abs(self.times[lo - 1] - t) <= abs(self.times[lo] - t):
+            lo -= 1
+        return lo
+
+
+def read_series(path):
+    """A --csv time series as {column: [float, ...]}."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return {name: [float(row[i]) for row in rows[1:]] for i, name in enumerate(rows[0])}
+
+
+def read_contacts(path):
+    """Contact rows grouped by step: {step: [row dict with floats]}."""
+    steps = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            values = {k: float(v) for k, v in row.items()}
+            steps.setdefault(int(values["frame"]), []).append(values)
+    return steps
+
+
+def contact_onsets(contacts, limit=4):
+    """The first step of each touch: a pair in contact in this step and not in the one before.
+    Resting contact (a ball on the ground touches every step) counts once. Returns the first
+    point's row of up to `limit` touches, in time order."""
+    onsets = []
+    for step in sorted(contacts):
+        before = {(int(c["body1"]), int(c["body2"])) for c in contacts.get(step - 1, [])}
+        onsets += [c for c in contacts[step] if int(c["point"]) == 0 and (int(c["body1"]), int(c["body2"])) not in before]
+    return onsets[:limit]
+
+
+# ---- The view ---------------------------------------------------------------------------------
+
+class View:
+    """Which two world axes the picture shows: h across, v up, and what to call the view."""
+
+    def __init__(self, h, v, name):
+        self.h, self.v, self.name = h, v, name
+        self.sign_v = 1.0
+
+    def project(self, p):
+        return (p[self.h], self.sign_v * p[self.v])
+
+    def label(self, axis):
+        return f"{AXES[axis]} / m"
+
+    @property
+    def xlabel(self):
+        return self.label(self.h)
+
+    @property
+    def ylabel(self):
+        return ("−" if self.sign_v < 0 else "") + self.label(self.v)
+
+
+def choose_view(scene, trajectories):
+    """The rule (docs/scene-format.md, "Motion pictures"): with gravity, a side view with up
+    against gravity and across the axis along which the bodies move furthest; without gravity,
+    a top view of the two axes along which the bodies move furthest (x before y before z on ties),
+    so a scene in the plane z = 0 is seen as the x-y plane."""
+    extent = [0.0, 0.0, 0.0]
+    for trajectory in trajectories:
+        for axis in range(3):
+            values = [s[0][axis] for states in trajectory.states for s, body in zip(states, scene.bodies)
+                      if not body.get("immovable")]
+            if values:
+                extent[axis] = max(extent[axis], max(values) - min(values))
+    if any(scene.gravity):
+        up = max(range(3), key=lambda a: abs(scene.gravity[a]))
+        across = max((a for a in range(3) if a != up), key=lambda a: (round(extent[a], 12), -a))
+        view = View(across, up, "side view")
+        view.sign_v = -1.0 if scene.gravity[up] > 0 else 1.0
+        return view
+    first, second = sorted(sorted(range(3), key=lambda a: (-round(extent[a], 12), a))[:2])
+    return View(first, second, "top view")
+
+
+# ---- Geometry ---------------------------------------------------------------------------------
+
+def rotate(q, v):
+    """q v q*, for a unit quaternion (w, x, y, z)."""
+    w, x, y, z = q
+    # t = 2 q_vec x v; v' = v + w t + q_vec x t
+    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
+    return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx)]
+
+
+def convex_hull(points):
+    pts = sorted(set(points))
+    if len(pts) <= 2:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def outline(body, position, q, view):
+    """('circle', (cx, cy), r) or ('polygon', [points]) of a movable body in the view, or None."""
+    shape = body["shape"]
+    if shape["type"] == "sphere":
+        return ("circle", view.project(position), float(shape["radius"]))
+    if shape["type"] == "box":
+        h = [float(e) for e in shape["half_extents"]]
+        corners = []
+        for sx in (-1, 1):
+            for sy in (-1, 1):
+                for sz in (-1, 1):
+                    local = rotate(q, [sx * h[0], sy * h[1], sz * h[2]])
+                    corners.append(view.project([position[i] + local[i] for i in range(3)]))
+        return ("polygon", convex_hull(corners))
+    return None
+
+
+def body_size(body):
+    """A movable body's largest half-width, m (0 for a plane)."""
+    shape = body["shape"]
+    if shape["type"] == "sphere":
+        return float(shape["radius"])
+    if shape["type"] == "box":
+        return max(float(e) for e in shape["half_extents"])
+    return 0.0
+
+
+def normal_arrow_length(scene, contact, box):
+    """Three times the larger body of the pair, at most a tenth of the picture: long enough to
+    see, short enough not to hide the bodies it points at."""
+    size = max(body_size(scene.bodies[int(contact["body1"])]), body_size(scene.bodies[int(contact["body2"])]))
+    return min(3.0 * size, 0.1 * max(box[1] - box[0], box[3] - box[2]))
+
+
+def plane_line(body, position, q, view):
+    """(point, unit normal) of a plane's trace in the view, or None when the plane lies in the
+    picture's own plane (its normal points at the viewer)."""
+    normal = rotate(q, [float(n) for n in body["shape"]["normal"]])
+    n2 = view.project(normal)
+    length = math.hypot(*n2)
+    if length < 1e-9:
+        return None
+    return view.project(position), (n2[0] / length, n2[1] / length)
+
+
+def extent_of(shapes):
+    """(xmin, xmax, ymin, ymax) over outlines."""
+    xs, ys = [], []
+    for shape in shapes:
+        if shape[0] == "circle":
+            (cx, cy), r = shape[1], shape[2]
+            xs += [cx - r, cx + r]
+            ys += [cy - r, cy + r]
+        else:
+            xs += [p[0] for p in shape[1]]
+            ys += [p[1] for p in shape[1]]
+    return min(xs), max(xs), min(ys), max(ys)
+
+
+def clip_polygon(polygon, box):
+    """Sutherland-Hodgman: the part of a convex polygon inside box (xmin, xmax, ymin, ymax)."""
+    xmin, xmax, ymin, ymax = box
+    edges = [(0, xmin, 1), (0, xmax, -1), (1, ymin, 1), (1, ymax, -1)]
+    for axis, limit, side in edges:
+        inside = lambda p: side * (p[axis] - limit) >= 0  # noqa: E731
+        out = []
+        for i, p in enumerate(polygon):
+            prev = polygon[i - 1]
+            if inside(p):
+                if not inside(prev):
+                    out.append(intersect(prev, p, axis, limit))
+                out.append(p)
+            elif inside(prev):
+                out.append(intersect(prev, p, axis, limit))
+        polygon = out
+        if not polygon:
+            return []
+    return polygon
+
+
+def clip_line(point, direction, box):
+    """The two ends of the infinite line point + s direction inside box, or None."""
+    lo, hi = -math.inf, math.inf
+    for axis, (low, high) in enumerate(((box[0], box[1]), (box[2], box[3]))):
+        if abs(direction[axis]) < 1e-15:
+            if not low <= point[axis] <= high:
+                return None
+            continue
+        s1, s2 = (low - point[axis]) / direction[axis], (high - point[axis]) / direction[axis]
+        lo, hi = max(lo, min(s1, s2)), min(hi, max(s1, s2))
+    if lo > hi:
+        return None
+    return [(point[0] + s * direction[0], point[1] + s * direction[1]) for s in (lo, hi)]
+
+
+def intersect(a, b, axis, limit):
+    s = (limit - a[axis]) / (b[axis] - a[axis])
+    return (a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]))
+
+
+def fit_box(xmin, xmax, ymin, ymax, aspect, margin=0.08):
+    """The data box grown by `margin` and then to width/height = `aspect`, centred."""
+    w, h = xmax - xmin, ymax - ymin
+    size = max(w, h, 1e-9)
+    w, h = max(w, 1e-3 * size), max(h, 1e-3 * size)
+    cx, cy = (xmin + xmax) / 2, (ymin + ymax) / 2
+    w, h = w * (1 + 2 * margin), h * (1 + 2 * margin)
+    if w / h < aspect:
+        w = h * aspect
+    else:
+        h = w / aspect
+    return cx - w / 2, cx + w / 2, cy - h / 2, cy + h / 2
+
+
+def faded(colour, strength):
+    """`colour` mixed with white: strength 1 is the colour, 0 is white."""
+    rgb = [int(colour[i:i + 2], 16) for i in (1, 3, 5)]
+    return "#" + "".join(f"{round(255 - strength * (255 - c)):02X}" for c in rgb)
+
+
+def number(value, digits=3):
+    return f"{value:.{digits}g}".replace("-", "\u2212")
+
+
+def impulse_text(j):
+    """J in N s, or kN s from 10^4 N s on, with four significant digits."""
+    j = abs(j)
+    return f"J = {j / 1000:.4g} kN s" if j >= 1e4 else f"J = {j:.4g} N s"
+
+
+class Canvas:
+    """Collects gnuplot object, arrow and label commands with their own numbering, for one view."""
+
+    def __init__(self, view=None):
+        self.view = view
+        self.lines = []
+        self.objects = 0
+        self.arrows = 0
+        self.labels = 0
+
+    def circle(self, centre, radius, colour, fill, width=2.0, dashed=False, opacity=0.15):
+        self.objects += 1
+        fs = f"fs transparent solid {opacity} border lc rgb '{colour}'" if fill else f"fs empty border lc rgb '{colour}'"
+        self.lines.append(f"set object {self.objects} circle at {centre[0]!r},{centre[1]!r} size {radius!r} "
+                          f"front fc rgb '{fill or colour}' {fs} lw {width}{' dt 2' if dashed else ''}")
+
+    def polygon(self, points, colour, fill, width=2.0, dashed=False, opacity=0.15, layer="front"):
+        if len(points) < 3:
+            return
+        self.objects += 1
+        path = " to ".join(f"{p[0]!r},{p[1]!r}" for p in points + [points[0]])
+        fs = f"fs transparent solid {opacity} border lc rgb '{colour}'" if fill else f"fs empty border lc rgb '{colour}'"
+        self.lines.append(f"set object {self.objects} polygon from {path} {layer} fc rgb '{fill or colour}' {fs} "
+                          f"lw {width}{' dt 2' if dashed else ''}")
+
+    def shape(self, shape, colour, fill, width=2.0, dashed=False, opacity=0.15):
+        if shape[0] == "circle":
+            self.circle(shape[1], shape[2], colour, fill, width, dashed, opacity)
+        else:
+            self.polygon(shape[1], colour, fill, width, dashed, opacity)
+
+    def arrow(self, start, end, colour, width=3.0, head=True):
+        self.arrows += 1
+        self.lines.append(f"set arrow {self.arrows} from {start[0]!r},{start[1]!r} to {end[0]!r},{end[1]!r} front "
+                          f"lc rgb '{colour}' lw {width} {'filled head size screen 0.012,25' if head else 'nohead'}")
+
+    def label(self, text, at, colour="#202020", align="left", font="label_font", coords="first", offset=None,
+              rotate=0, boxed=False):
+        self.labels += 1
+        where = f"{coords} {at[0]!r}, {coords} {at[1]!r}" if coords == "first" else f"{coords} {at[0]!r}, {at[1]!r}"
+        off = f" offset character {offset[0]}, {offset[1]}" if offset else ""
+        turn = f" rotate by {rotate:.1f}" if rotate else ""
+        self.lines.append(f"set label {self.labels} {quote(text)} at {where} {align}{turn}{off} front font {font} "
+                          f"tc rgb '{colour}' noenhanced{' boxed' if boxed else ''}")
+
+    def point(self, at, colour, size=0.6):
+        self.labels += 1
+        self.lines.append(f"set label {self.labels} '' at {at[0]!r},{at[1]!r} point pt 7 ps {size} lc rgb '{colour}' front")
+
+    def reset(self):
+        self.lines += ["unset object", "unset arrow", "unset label"]
+        self.objects = self.arrows = self.labels = 0
+
+
+def draw_planes(canvas, scene, trajectory, view, box):
+    """Immovable planes as a surface line with a grey band on their solid side, clipped to the box."""
+    xmin, xmax, ymin, ymax = box
+    depth = 0.035 * max(xmax - xmin, ymax - ymin)
+    far = 4 * math.hypot(xmax - xmin, ymax - ymin)
+    for i, body in enumerate(scene.bodies):
+        if body["shape"]["type"] != "plane":
+            continue
+        position, q, _ = trajectory.states[0][i]
+        trace = plane_line(body, position, q, view)
+        if trace is None:
+            continue
+        (px, py), (nx, ny) = trace
+        dx, dy = -ny, nx
+        a, b = (px - far * dx, py - far * dy), (px + far * dx, py + far * dy)
+        band = [a, b, (b[0] - depth * nx, b[1] - depth * ny), (a[0] - depth * nx, a[1] - depth * ny)]
+        canvas.polygon(clip_polygon(band, box), GROUND_FILL, GROUND_FILL, width=0.5, opacity=1.0, layer="back")
+        ends = clip_line((px, py), (dx, dy), box)
+        if ends:
+            canvas.arrow(ends[0], ends[1], GROUND_LINE, width=2.5, head=False)
+        inside = clip_polygon(band, box)
+        if inside:
+            cx = sum(p[0] for p in inside) / len(inside)
+            cy = sum(p[1] for p in inside) / len(inside)
+            # The name runs along the surface, inside the band.
+            canvas.label(scene.names[i], (cx, cy), GROUND_LINE, align="center", font="note_font",
+                         rotate=math.degrees(math.atan2(dy, dx)) if abs(dx) < 0.5 else 0)
+
+
+def plane_bounds(scene, trajectory, view):
+    """Points a picture must include for its planes: where each plane crosses the view."""
+    points = []
+    for i, body in enumerate(scene.bodies):
+        if body["shape"]["type"] == "plane":
+            position, q, _ = trajectory.states[0][i]
+            trace = plane_line(body, position, q, view)
+            if trace:
+                points.append(("polygon", [trace[0]]))
+    return points
+
+
+def movable(scene):
+    return [i for i, b in enumerate(scene.bodies) if b["shape"]["type"] != "plane"]
+
+
+def run_gnuplot(script, what):
+    result = subprocess.run(["gnuplot"], input=script, capture_output=True, text=True)
+    if result.returncode != 0 or result.stderr.strip():
+        raise RuntimeError(f"gnuplot on {what}:\n{result.stderr.strip()[:2000]}")

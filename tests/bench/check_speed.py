@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Keeps `./workbook bench speed` from rotting without timing anything: runs bench/speed.py
+on a small gas (N = 100 and 300, 60 steps, one repetition) with every engine workbook-gas
+was built with, and checks the shape of what it writes and that each engine's gas keeps
+what it should: every disc inside the box, the energy finite, and the workbook's energy
+to rounding (the peers' iterative solvers are not held to that; their drift is reported)."""
+
+import argparse
+import csv
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+SOURCE = Path(__file__).resolve().parents[2]
+SIZES = [100, 300]
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--gas", required=True)
+    args = parser.parse_args()
+    failures = []
+    with tempfile.TemporaryDirectory() as out:
+        out = Path(out)
+        result = subprocess.run([sys.executable, str(SOURCE / "bench" / "speed.py"), "--gas", args.gas, "--out", str(out),
+                                 "--sizes", ",".join(map(str, SIZES)), "--repeat", "1", "--steps", "60", "--no-figure"],
+                                capture_output=True, text=True, timeout=120)
+        if result.returncode != 0:
+            sys.exit(f"bench/speed.py failed:\n{result.stderr}")
+        with open(out / "speed.csv", newline="") as f:
+            rows = list(csv.DictReader(f))
+        engines = sorted({r["engine"] for r in rows})
+        print(f"engines built: {', '.join(engines)}")
+        if "workbook" not in engines:
+            failures.append("the workbook's own engine is missing from speed.csv")
+        expected = ["engine", "n", "steps", "repeats", "ms_per_step", "ms_per_step_min", "ms_per_step_max",
+                    "bytes_per_body", "energy_drift", "escaped"]
+        if list(rows[0].keys()) != expected:
+            failures.append(f"speed.csv columns {list(rows[0].keys())}, expected {expected}")
+        if len(rows) != len(engines) * len(SIZES):
+            failures.append(f"{len(rows)} rows, expected one per engine and N ({len(engines)} x {len(SIZES)})")
+        for r in rows:
+            where = f"{r['engine']} at N = {r['n']}"
+            if r["repeats"] != "1" or r["steps"] != "60":
+                failures.append(f"{where}: ran {r['repeats']} times {r['steps']} steps, expected once, 60 steps")
+                continue
+            ms, drift = float(r["ms_per_step"]), float(r["energy_drift"])
+            if not (math.isfinite(ms) and ms > 0):
+                failures.append(f"{where}: time per step {r['ms_per_step']}, expected a positive number")
+            if not math.isfinite(drift):
+                failures.append(f"{where}: energy drift {r['energy_drift']} is not finite")
+            if r["escaped"] != "0":
+                failures.append(f"{where}: {r['escaped']} discs left the box through its walls")
+            if r["engine"] == "workbook" and drift > 1e-12:
+                failures.append(f"{where}: energy drift {drift:.3e} over 60 elastic steps, expected rounding (<= 1e-12)")
+        table = (out / "speed.md").read_text()
+        page = (out / "performance.md").read_text()
+        for needle, text, name in [("| N | steps |", table, "speed.md"), ("growth with N", table, "speed.md"),
+                                   ("{#performance}", page, "performance.md"), ("Measured ", page, "performance.md")]:
+            if needle not in text:
+                failures.append(f"{name} lacks '{needle}'")
+    for failure in failures:
+        print("FAIL:", failure)
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,86 @@
+// Every chapter scene steps bit-identically with each shortcut of the world on and off
+// (World::Shortcuts); the grid broad phase is forced on even for scenes of two bodies,
+// where the world would not use it, so that it is compared on every scene.
+#include <catch2/catch_test_macros.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "state_hash.hpp"
+#include "workbook/response_model.hpp"
+#include "workbook/scene.hpp"
+#include "workbook/time_series.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace workbook;
+
+std::vector<fs::path> every_chapter_scene() {
+    std::vector<fs::path> files;
+    for (const auto& chapter : fs::directory_iterator(fs::path(WORKBOOK_SOURCE_DIR) / "chapters")) {
+        const fs::path scenes = chapter.path() / "scenes";
+        if (!fs::is_directory(scenes)) continue;
+        for (const auto& entry : fs::directory_iterator(scenes))
+            if (entry.path().extension() == ".json") files.push_back(entry.path());
+    }
+    std::ranges::sort(files);
+    return files;
+}
+
+/// The state hash after every step of the scene, with the given shortcuts.
+/// The state hash after every step of the scene, with the given shortcuts, followed by the
+/// hash of the probes after every step (the energy probe's column only when recorded).
+std::vector<std::uint64_t> path_of(const Scene& scene, const Shortcuts& shortcuts) {
+    World world = make_world(scene, *find_response_model(scene.responder));
+    world.set_shortcuts(shortcuts);
+    std::vector<std::uint64_t> hashes;
+    const std::size_t steps = step_count(scene.duration, scene.settings.time_step);
+    for (std::size_t i = 0; i < steps; ++i) {
+        world.step();
+        hashes.push_back(testing::state_hash(world));
+        const Probes p = world.probes();
+        testing::StateHash h;
+        h.add(p.kinetic_linear);
+        h.add(p.kinetic_rotational);
+        h.add(p.potential);
+        h.add(p.linear_momentum);
+        h.add(p.angular_momentum);
+        if (shortcuts.response_energy_probe) h.add(p.response_energy_change);
+        hashes.push_back(h.value());
+    }
+    return hashes;
+}
+
+}  // namespace
+
+TEST_CASE("every chapter scene takes the same path with every shortcut on as with all off", "[shortcuts]") {
+    const auto files = every_chapter_scene();
+    REQUIRE(files.size() >= 5);
+    const Shortcuts all_on{.broad_phase = true, .broad_phase_from = 0};
+    const Shortcuts all_off{.broad_phase = false,
+                            .skip_immovable_pairs = false,
+                            .skip_still_rotation = false,
+                            .skip_zero_gravity = false,
+                            .response_energy_probe = true};
+    for (const fs::path& file : files) {
+        CAPTURE(file.string());
+        const Scene scene = load_scene(file);
+        const auto reference = path_of(scene, all_off);
+        REQUIRE(!reference.empty());
+        CHECK(path_of(scene, all_on) == reference);
+        CHECK(path_of(scene, Shortcuts{}) == reference);  // the defaults
+        Shortcuts without_probe = all_on;
+        without_probe.response_energy_probe = false;
+        const auto unprobed = path_of(scene, without_probe);
+        // Bodies and contacts after each step (every other hash) as with the probe.
+        for (std::size_t i = 0; i < reference.size(); i += 2) {
+            if (unprobed[i] != reference[i]) {
+                CAPTURE(i / 2);
+                FAIL("turning the energy probe off changed the bodies' path");
+            }
+        }
+    }
+}

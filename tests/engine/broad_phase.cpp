@@ -1,0 +1,138 @@
+// The grid broad phase finds exactly the contacts testing every pair finds, in the same
+// order, so that a world steps bit-identically with it and without it.
+#include <catch2/catch_test_macros.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "seeded_random.hpp"
+#include "state_hash.hpp"
+#include "workbook/broad_phase.hpp"
+#include "workbook/world.hpp"
+
+namespace {
+
+using namespace workbook;
+using workbook::testing::SeededRandom;
+using workbook::testing::state_hash;
+
+/// An elastic impulse that depends on the order contacts come in (each one sees the
+/// velocities the previous ones left), plus a projection, so any reordering shows.
+void elastic(RigidBody& body1, RigidBody& body2, const Contact& contact) {
+    const double approach = dot(body1.velocity - body2.velocity, contact.normal);
+    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
+    if (approach >= 0.0 || inverse_masses == 0.0) return;
+    const double impulse = -2.0 * approach / inverse_masses;
+    body1.velocity += contact.normal * (impulse * body1.inverse_mass);
+    body2.velocity -= contact.normal * (impulse * body2.inverse_mass);
+}
+
+void push_apart(RigidBody& body1, RigidBody& body2, const Contact& contact, const PositionCorrection& knobs) {
+    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
+    if (inverse_masses == 0.0) return;
+    const Vector3 push = contact.normal * (knobs.fraction * contact.penetration / inverse_masses);
+    body1.position += push * body1.inverse_mass;
+    body2.position -= push * body2.inverse_mass;
+}
+
+constexpr ResponseModel bouncing{"test", elastic, push_apart};
+
+/// A crowded 3D box of balls of mixed sizes and masses, a few pinned balls, walls and a floor
+/// (planes placed among the balls in index order, not only at the end), under gravity.
+std::vector<RigidBody> crowd(std::uint64_t seed, int balls) {
+    SeededRandom random(seed);
+    std::vector<RigidBody> bodies;
+    const double half = 2.0;
+    for (int i = 0; i < balls; ++i) {
+        if (i == balls / 3) bodies.push_back(make_immovable_plane({0, 1, 0}, {0, -half, 0}));
+        if (i == balls / 2) bodies.push_back(make_immovable_plane({1, 0, 0}, {-half, 0, 0}));
+        const Vector3 at{random.uniform(-half, half), random.uniform(-half, half), random.uniform(-half, half)};
+        if (i % 17 == 5) {
+            bodies.push_back(make_immovable_sphere(random.uniform(0.05, 0.3), at));
+            continue;
+        }
+        const Vector3 v{random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3)};
+        bodies.push_back(make_sphere(random.uniform(0.5, 4.0), random.uniform(0.02, 0.2), at, v));
+    }
+    bodies.push_back(make_immovable_plane({-1, 0, 0}, {half, 0, 0}));
+    bodies.push_back(make_immovable_plane({0, 0, 1}, {0, 0, -half}));
+    bodies.push_back(make_immovable_plane({0, 0, -1}, {0, 0, half}));
+    bodies.push_back(make_immovable_plane({0, -1, 0}, {0, half, 0}));
+    return bodies;
+}
+
+}  // namespace
+
+TEST_CASE("the grid finds the contacts of testing every pair, in the same order, step after step", "[world][broad_phase]") {
+    const std::uint64_t seed = workbook::testing::run_seed();
+    CAPTURE(seed);
+    const std::vector<RigidBody> bodies = crowd(seed, 600);
+    const WorldSettings settings{1.0 / 120.0, {0, -9.81, 0}};
+    World grid(bodies, settings, bouncing);
+    World every_pair(bodies, settings, bouncing);
+    every_pair.set_shortcuts({.broad_phase = false});
+
+    std::size_t contacts = 0;
+    for (int step = 0; step < 200; ++step) {
+        grid.step();
+        every_pair.step();
+        contacts += grid.contacts().size();
+        if (state_hash(grid) != state_hash(every_pair)) {
+            CAPTURE(step, grid.contacts().size(), every_pair.contacts().size());
+            FAIL("the grid's world left the all-pairs world's path");
+        }
+    }
+    CHECK(grid.used_broad_phase());
+    CHECK_FALSE(every_pair.used_broad_phase());
+    // Worth something only if there were many contacts to get wrong.
+    CHECK(contacts > 2000);
+}
+
+TEST_CASE("the grid's pairs are sorted, unique, and a superset of the overlapping ones", "[broad_phase]") {
+    const std::vector<RigidBody> bodies = crowd(workbook::testing::run_seed() + 1, 400);
+    BroadPhase broad;
+    std::vector<BodyPair> pairs;
+    broad.find_pairs(bodies, pairs);
+    REQUIRE_FALSE(pairs.empty());
+    CHECK(std::ranges::is_sorted(pairs, [](BodyPair a, BodyPair b) { return a.first != b.first ? a.first < b.first : a.second < b.second; }));
+    CHECK(std::ranges::adjacent_find(pairs, [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; }) == pairs.end());
+    std::size_t overlapping = 0;
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < bodies.size(); ++j) {
+            if (bodies[i].shape.kind == ShapeKind::plane || bodies[j].shape.kind == ShapeKind::plane) continue;
+            if (bodies[i].is_immovable() && bodies[j].is_immovable()) continue;
+            const double reach = bodies[i].shape.radius + bodies[j].shape.radius;
+            if (length_squared(bodies[i].position - bodies[j].position) >= reach * reach) continue;
+            ++overlapping;
+            const bool found = std::ranges::find_if(pairs, [&](BodyPair p) { return p.first == i && p.second == j; }) != pairs.end();
+            if (!found) {
+                CAPTURE(i, j);
+                FAIL("an overlapping pair is missing");
+            }
+        }
+    }
+    CHECK(overlapping > 10);
+}
+
+TEST_CASE("a body at NaN makes the grid fall back to every pair, with the same answer", "[broad_phase]") {
+    std::vector<RigidBody> bodies{make_sphere(1, 0.5, {0, 0, 0}), make_sphere(1, 0.5, {0.5, 0, 0}),
+                                  make_sphere(1, 0.5, {std::numeric_limits<double>::quiet_NaN(), 0, 0})};
+    BroadPhase broad;
+    std::vector<BodyPair> pairs;
+    broad.find_pairs(bodies, pairs);
+    CHECK(pairs.size() == 3);
+}
+
+TEST_CASE("bodies spread far apart keep the grid small and the answer right", "[broad_phase]") {
+    // Two touching pairs 1e12 m apart: a grid of one-diameter cells would need 1e12 cells.
+    std::vector<RigidBody> bodies{make_sphere(1, 0.5, {0, 0, 0}), make_sphere(1, 0.5, {0.9, 0, 0}),
+                                  make_sphere(1, 0.5, {1e12, 0, 0}), make_sphere(1, 0.5, {1e12, 0.9, 0})};
+    BroadPhase broad;
+    std::vector<BodyPair> pairs;
+    broad.find_pairs(bodies, pairs);
+    REQUIRE(pairs.size() == 2);
+    CHECK((pairs[0].first == 0 && pairs[0].second == 1));
+    CHECK((pairs[1].first == 2 && pairs[1].second == 3));
+}

@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""Checks the strobe pictures (plots/strobe.py) against the trajectories they are drawn from.
+
+- The view rule: a scene with gravity is seen from the side with up against gravity; one
+  without is seen from the top, across the two axes the bodies move along.
+- Nothing is cut off: every outline drawn lies inside the picture's box, and the box has the
+  aspect asked for (with `set size ratio -1`, one metre across equals one metre up).
+- The marked contacts are the touches' first steps, with the impulse of the trajectory file:
+  in the head-on carts, one touch at t = 0.2 s with J = mu |v1 - v2| = 2/3 kg * 3 m/s = 2 N s.
+- Every scene of every chapter gets an SVG, a PDF and a PNG of the stated size.
+
+    strobe_test.py --sim build/dev/tools/workbook-sim --source .
+"""
+
+import argparse
+import struct
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--sim", type=Path, required=True)
+    parser.add_argument("--source", type=Path, required=True)
+    parser.add_argument("--student-sim", type=Path, required=True)
+    args = parser.parse_args()
+    sys.path.insert(0, str(args.source / "plots"))
+    import motion
+    import strobe
+
+    scenes_dir = args.source / "chapters" / "inelastic" / "scenes"
+    with tempfile.TemporaryDirectory() as scratch:
+        scratch = Path(scratch)
+        loaded = {}
+        for path in sorted(scenes_dir.glob("*.json")):
+            scene = motion.Scene(path)
+            t, c = motion.simulate(args.sim, path, scratch / f"{path.stem}.trajectory.csv", motion.stride_for(scene.spec))
+            loaded[path.stem] = (scene, motion.Trajectory(t), motion.read_contacts(c))
+
+        # The view rule.
+        scene, trajectory, _ = loaded["clay-drop"]
+        view = motion.choose_view(scene, [trajectory])
+        check((view.h, view.v, view.name, view.sign_v) == (0, 1, "side view", 1.0), f"clay-drop view {vars(view)}")
+        scene, trajectory, _ = loaded["car-crash"]
+        view = motion.choose_view(scene, [trajectory])
+        check((view.h, view.v, view.name) == (0, 1, "top view"), f"car-crash view {vars(view)}")
+        spec = dict(loaded["clay-drop"][0].spec, gravity=[0, 0, 9.81])
+        upside = motion.choose_view(motion.Scene(scenes_dir / "clay-drop.json", spec), [loaded["clay-drop"][1]])
+        check((upside.v, upside.sign_v) == (2, -1.0), f"gravity +z should give up = -z, got {vars(upside)}")
+
+        # Boxes (chapter 4) are drawn by their orientation: the outline of the projected corners.
+        import math
+        box_body = {"shape": {"type": "box", "half_extents": [1.0, 0.5, 0.25]}}
+        top = motion.View(0, 1, "top view")
+        for angle, half_x, half_y in ((0.0, 1.0, 0.5), (90.0, 0.5, 1.0), (45.0, 1.5 / math.sqrt(2), 1.5 / math.sqrt(2))):
+            half = math.radians(angle) / 2
+            shape = motion.outline(box_body, [2.0, 3.0, 0.0], [math.cos(half), 0.0, 0.0, math.sin(half)], top)
+            x0, x1, y0, y1 = motion.extent_of([shape])
+            corners = len(shape[1])
+            check(shape[0] == "polygon" and corners == 4, f"box at {angle} degrees: {corners} corners, expected 4")
+            for got, want in ((x0, 2 - half_x), (x1, 2 + half_x), (y0, 3 - half_y), (y1, 3 + half_y)):
+                check(abs(got - want) < 1e-12, f"box at {angle} degrees spans {x0}..{x1}, {y0}..{y1}")
+
+        # Nothing cut off, aspect kept.
+        for name, (scene, trajectory, contacts) in loaded.items():
+            view = motion.choose_view(scene, [trajectory])
+            box = strobe.picture_box(scene, [(trajectory, contacts)], view)
+            aspect = (box[1] - box[0]) / (box[3] - box[2])
+            check(abs(aspect - strobe.ASPECT) < 1e-9 * strobe.ASPECT, f"{name}: box aspect {aspect}")
+            for k in strobe.snapshot_indices(trajectory, scene.duration):
+                for i in motion.movable(scene):
+                    position, q, _ = trajectory.states[k][i]
+                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, q, view)])
+                    check(box[0] < x0 and x1 < box[1] and box[2] < y0 and y1 < box[3],
+                          f"{name}: body {i} at frame {k} ({x0}..{x1}, {y0}..{y1}) leaves the box {box}")
+
+        # The marked contact of the head-on carts.
+        onsets = motion.contact_onsets(loaded["head-on-carts"][2])
+        check(len(onsets) == 1, f"head-on carts: {len(onsets)} touches marked, expected 1")
+        if onsets:
+            check(abs(onsets[0]["t"] - 0.2) < 1e-9, f"head-on carts: touch at t = {onsets[0]['t']}")
+            check(abs(onsets[0]["impulse"] - 2.0) < 1e-12, f"head-on carts: J = {onsets[0]['impulse']}, expected 2 N s")
+        drop = motion.contact_onsets(loaded["clay-drop"][2])
+        check(len(drop) == 1, f"clay drop: resting contact should be marked once, got {len(drop)}")
+
+        # The chapter page's strobe captions state when each touch began: the marked onsets' times.
+        import re
+        page = (args.source / "chapters/inelastic/chapter.md").read_text()
+        captions = re.findall(r'figurefile\{inelastic/([a-z-]+)-strobe\} "([^"]*)"', page)
+        check(len(captions) == len(loaded), f"chapter.md shows {len(captions)} strobe pictures, there are {len(loaded)} scenes")
+        for stem, caption in captions:
+            stated = [float(t) for t in re.findall(r"t = ([0-9.]+) s", caption)]
+            marked = [c["t"] for c in motion.contact_onsets(loaded[stem][2])]
+            check(all(any(abs(s - m) <= 0.5 * 10 ** -len(f"{s}".split(".")[-1]) + 1e-12 for m in marked) for s in stated),
+                  f"chapter.md: the caption of {stem}-strobe states t = {stated}, the touches begin at {marked}")
+
+        # Every scene of every chapter drawn, in three formats.
+        chapters = [line.split("#")[0].strip() for line in (args.source / "chapters/CHAPTERS").read_text().splitlines()]
+        for chapter in filter(None, chapters):
+            out = scratch / chapter
+            result = subprocess.run([sys.executable, str(args.source / "plots/strobe.py"), chapter, str(out),
+                                     "--sim", str(args.sim)], capture_output=True, text=True)
+            check(result.returncode == 0, f"strobe.py {chapter} failed: {result.stderr}")
+            for path in sorted((args.source / "chapters" / chapter / "scenes").glob("*.json")):
+                for ext in ("svg", "pdf", "png"):
+                    check((out / f"{path.stem}-strobe.{ext}").stat().st_size > 1000 if (out / f"{path.stem}-strobe.{ext}").exists()
+                          else False, f"{chapter}: no {path.stem}-strobe.{ext}")
+                png = out / f"{path.stem}-strobe.png"
+                if png.exists():
+                    width, height = struct.unpack(">II", png.read_bytes()[16:24])
+                    check((width, height) == (1800, 750), f"{png.name} is {width}x{height}, expected 1800x750")
+
+    # --student: the student's run drawn over the reference's, from the student's simulator.
+    with tempfile.TemporaryDirectory() as out:
+        out = Path(out)
+        scene = scenes_dir / "head-on-carts.json"
+        result = subprocess.run([sys.executable, str(args.source / "plots/strobe.py"), "inelastic", str(out), "--scene",
+                                 str(scene), "--sim", str(args.sim), "--student", "--student-sim", str(args.student_sim)],
+                                capture_output=True, text=True)
+        check(result.returncode == 0, f"strobe.py --student failed: {result.stderr}")
+        for ext in ("svg", "pdf", "png"):
+            check((out / f"head-on-carts-strobe.student.{ext}").exists(), f"no head-on-carts-strobe.student.{ext}")
+        check(not (out / "head-on-carts-strobe.svg").exists(), "--student overwrote the reference's picture")
+        direct = out / "direct.csv"
+        motion.simulate(args.student_sim, scene, direct)
+        check((out / "head-on-carts.student.trajectory.csv").read_text() == direct.read_text(),
+              "the student's trajectory is not the student simulator's")
+        svg = (out / "head-on-carts-strobe.student.svg").read_text()
+        rgb = ", ".join(f"{int(motion.STUDENT_COLOUR[i:i + 2], 16):3d}" for i in (1, 3, 5))
+        check(svg.count(f"stroke='rgb({rgb})' stroke-dasharray") >= 3,
+              f"the student's bodies are not drawn dashed in rgb({rgb}) (the key and at least one outline)")
+        data = (out / "head-on-carts.student.player.js").read_text()
+        check('"student":true' in data and '"student":false' in data, "the player data lacks one of the two runs")
+
+    for f in failures:
+        print("FAIL:", f)
+    print(f"{len(failures)} failures")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

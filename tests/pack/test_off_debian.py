@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Off Debian: ./workbook looks for its tools before it thinks of apt. With every tool there
+and neither apt nor dpkg, it goes on; with a tool missing it prints what to install on
+Fedora, Arch and macOS (Homebrew), goes on when only optional tools are missing and stops
+when a tool every command needs is. And the student edition builds and checks with Clang
+alone: PATH without apt-get, dpkg, gcc or g++, and CXX=clang++.
+
+The "system without apt" is this machine seen through a PATH of links to every program on
+it except those hidden, so no container is needed."""
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "grader"))
+import pack_student  # noqa: E402
+
+sys.path.insert(0, str(ROOT / "tools"))
+import workbook_files  # noqa: E402
+
+PACKAGE_MANAGERS = {"apt", "apt-get", "apt-cache", "apt-mark", "apt-config", "dpkg", "dpkg-query", "dpkg-deb"}
+GCC = {"gcc", "g++", "cc", "c++", "cpp"}
+
+
+def hidden_by_name(name, hidden):
+    return name in hidden or any(name.startswith(h + "-") for h in hidden if h in GCC) or \
+        name.startswith(("x86_64-linux-gnu-gcc", "x86_64-linux-gnu-g++", "aarch64-linux-gnu-gcc", "aarch64-linux-gnu-g++"))
+
+
+def path_without(folder, hidden):
+    """A folder of links to every program on PATH but the hidden ones; returns it as a PATH."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for directory in os.environ["PATH"].split(os.pathsep):
+        if not os.path.isdir(directory):
+            continue
+        for entry in os.scandir(directory):
+            link = folder / entry.name
+            if link.exists() or hidden_by_name(entry.name, hidden):
+                continue
+            if entry.is_file() and os.access(entry.path, os.X_OK):
+                link.symlink_to(entry.path)
+    return str(folder)
+
+
+class OffDebian(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scratch = tempfile.TemporaryDirectory(prefix="off-debian-")
+        cls.root = pathlib.Path(cls.scratch.name)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.scratch.cleanup()
+
+    def env(self, name, hidden, **extra):
+        return dict(os.environ, PATH=path_without(self.root / name, PACKAGE_MANAGERS | set(hidden)), **extra)
+
+    def workbook(self, folder, env, *args, timeout=120):
+        return subprocess.run([str(folder / "workbook"), *args], cwd=folder, env=env, capture_output=True, text=True,
+                              timeout=timeout)
+
+    def test_all_tools_there_and_no_apt_goes_on_quietly(self):
+        run = self.workbook(ROOT, self.env("all", set()), "setup")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertEqual(run.stderr, "")
+
+    def test_optional_tools_missing_prints_what_to_install_and_goes_on(self):
+        run = self.workbook(ROOT, self.env("no-gnuplot", {"gnuplot", "doxygen"}), "setup")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        for line in ("gnuplot              needed by figures", "doxygen              needed by docs (the site)",
+                     "Fedora:           sudo dnf install gnuplot doxygen",
+                     "Arch:             sudo pacman -S --needed gnuplot doxygen",
+                     "macOS (Homebrew): brew install gnuplot doxygen", "going on"):
+            self.assertIn(line, run.stderr)
+        self.assertNotIn("apt-get", run.stderr)
+
+    def test_a_tool_every_command_needs_missing_stops(self):
+        run = self.workbook(ROOT, self.env("no-cmake", {"cmake", "ninja"}), "setup")
+        self.assertEqual(run.returncode, 1, run.stderr)
+        self.assertIn("cmake                needed by every command", run.stderr)
+        self.assertIn("sudo dnf install cmake ninja-build", run.stderr)
+        self.assertIn("brew install cmake ninja", run.stderr)
+
+    def test_the_student_edition_builds_and_checks_with_clang_alone(self):
+        pack = self.root / "workbook-student"
+        pack_student.write_pack(pack)
+        env = self.env("clang-alone", GCC, CXX="clang++")
+        for chapter in workbook_files.chapters(pack):
+            run = self.workbook(pack, env, "check", chapter, timeout=1500)
+            output = run.stdout + run.stderr
+            self.assertEqual(run.returncode, 1, output[-3000:])
+            self.assertIn("FAIL  Step 1", run.stdout, output[-3000:])
+            self.assertIn(" steps pass.", run.stdout)
+            self.assertNotIn("apt-get", run.stderr)
+        cache = (pack / "build/student/CMakeCache.txt").read_text()
+        self.assertRegex(cache, r"CMAKE_CXX_COMPILER:\w+=\S*clang\+\+")
+        scene = next((pack / "chapters").glob("*/scenes/*.json"))
+        run = self.workbook(pack, env, "run", str(scene), timeout=1500)
+        self.assertEqual(run.returncode, 0, (run.stdout + run.stderr)[-3000:])
+        self.assertIn("g++ not found: build/dev uses clang++", run.stderr)
+        self.assertIn("total energy", run.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// The accuracy bench: run time against error over the choices that trade one for the other.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "families.hpp"
+
+namespace workbook::accuracy {
+
+/// One configuration of the sweep and what it measured.
+struct BenchPoint {
+    std::string family;
+    double frame_step = 0.0;  ///< s, the step a game loop would call the world with
+    int substeps = 1;         ///< world steps per frame; the world's time step is frame_step / substeps
+    Integrator integrator = Integrator::semi_implicit_euler;
+    ContactTiming timing = ContactTiming::discrete;
+    FamilyError result;
+    double seconds = 0.0;     ///< processor time of one run, s (the fastest of three batches' means)
+    bool pareto = false;      ///< no faster point of the family has a smaller error
+};
+
+/// Frame steps 1/30 .. 1/3840 s, substeps 1, 2, 4 (world steps no finer than 1/3840 s), the
+/// semi-implicit Euler and exact-under-gravity integrators, discrete and event timing. The
+/// guard is off, as in every benchmark.
+std::vector<BenchPoint> sweep(const Family& family, const ResponseModel& model);
+
+/// Marks the Pareto front of one family's points.
+void mark_pareto_front(std::vector<BenchPoint>& points);
+
+/// The CSV the figures are drawn from, one line per point.
+void write_bench_csv(std::ostream& out, const std::vector<BenchPoint>& points);
+
+/// Names used in the CSV and on figures.
+const char* integrator_name(Integrator integrator);
+const char* timing_name(ContactTiming timing);
+
+/// What the finite-state guard costs: ns per step with it on and off, over `steps` steps of the
+/// small stress corpus's scene `scene_name`.
+struct GuardCost {
+    std::string scene;
+    std::size_t bodies = 0;
+    double on_ns = 0.0;
+    double off_ns = 0.0;
+};
+GuardCost measure_guard_cost(const ResponseModel& model, const std::string& scene_name, int steps);
+
+}  // namespace workbook::accuracy

@@ -1,0 +1,135 @@
+// workbook-accuracy: the stress corpus (numerical stability) and the accuracy bench (run time
+// against error on the scene families that have a closed form).
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <fmt/ostream.h>
+
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+
+#include <filesystem>
+#include <map>
+
+#include "bench.hpp"
+#include "impulse_model.hpp"
+#include "stress.hpp"
+#include "stress_table.hpp"
+#include "workbook/response_model.hpp"
+
+namespace {
+
+using namespace workbook::accuracy;
+
+const workbook::ResponseModel& model_named(const std::string& name) {
+    if (name.empty()) return model_for_benchmarks();
+    if (const auto* model = workbook::find_response_model(name)) return *model;
+    throw CLI::ValidationError("--responder", "no response model called \"" + name + "\"");
+}
+
+int run_stress_command(bool full, const std::string& csv_path, const std::string& responder) {
+    const workbook::ResponseModel& model = model_named(responder);
+    fmt::print("stress corpus ({}), responder {}\n", full ? "full" : "small", model.name);
+    std::vector<StressResult> results;
+    for (const StressScene& scene : stress_corpus(full)) {
+        fmt::print(stderr, "  {}: {}\n", scene.name, scene.what);
+        results.push_back(run_stress(scene, model, [&scene](std::uint64_t done) {
+            fmt::print(stderr, "\r  {} {:>9}/{} steps ({:3.0f}%)", scene.name, done, scene.steps,
+                       100.0 * static_cast<double>(done) / static_cast<double>(scene.steps));
+        }));
+        fmt::print(stderr, "\n");
+    }
+    print_stress_table(std::cout, results);
+    if (!csv_path.empty()) {
+        std::ofstream out(csv_path);
+        write_stress_csv(out, results);
+        if (!out.flush()) {
+            fmt::print(stderr, "error: cannot write {}\n", csv_path);
+            return 1;
+        }
+    }
+    for (const StressResult& r : results)
+        if (!r.passed()) return 1;
+    return 0;
+}
+
+bool write_file(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+    std::ofstream out(path);
+    write(out);
+    if (out.flush()) return true;
+    fmt::print(stderr, "error: cannot write {}\n", path.string());
+    return false;
+}
+
+int run_bench_command(const std::string& out_dir, const std::string& responder) {
+    const workbook::ResponseModel& model = model_named(responder);
+    const std::filesystem::path dir(out_dir);
+    std::filesystem::create_directories(dir);
+    fmt::print("accuracy bench, responder {}\n", model.name);
+    std::string event_cost = "family,time_step,discrete_seconds,event_seconds,ratio\n";
+    for (const Family& family : families()) {
+        fmt::print(stderr, "  {} ...\n", family.id);
+        const std::vector<BenchPoint> points = sweep(family, model);
+        if (!write_file(dir / (family.id + ".csv"), [&](std::ostream& out) { write_bench_csv(out, points); })) return 1;
+        // Event timing against discrete timing at the same step (exact-under-gravity, no substeps).
+        std::map<double, std::pair<double, double>> by_step;
+        for (const BenchPoint& p : points)
+            if (p.substeps == 1 && p.integrator == workbook::Integrator::exact_under_gravity)
+                (p.timing == workbook::ContactTiming::event ? by_step[p.frame_step].second : by_step[p.frame_step].first) =
+                    p.seconds;
+        double worst_ratio = 0.0;
+        for (const auto& [step, times] : by_step) {
+            event_cost += fmt::format("{},{:.17g},{:.6g},{:.6g},{:.4g}\n", family.id, step, times.first, times.second,
+                                      times.second / times.first);
+            worst_ratio = std::max(worst_ratio, times.second / times.first);
+        }
+        const auto best = [&points](workbook::ContactTiming timing) {
+            double e = 1e300;
+            for (const BenchPoint& p : points)
+                if (p.timing == timing) e = std::min(e, p.result.error);
+            return e;
+        };
+        fmt::print("  {:<14} best error discrete {:.3g}, event {:.3g}; event / discrete run time at the same step <= {:.2f}\n",
+                   family.id, best(workbook::ContactTiming::discrete), best(workbook::ContactTiming::event), worst_ratio);
+    }
+    if (!write_file(dir / "event-cost.csv", [&](std::ostream& out) { out << event_cost; })) return 1;
+    std::string guard_csv = "scene,bodies,ns_per_step_on,ns_per_step_off,overhead_percent\n";
+    for (const auto& [scene, steps] : {std::pair<std::string, int>{"steps-2e4", 200'000}, {"zero-gravity", 1'000}}) {
+        const GuardCost guard = measure_guard_cost(model, scene, steps);
+        const double overhead = 100.0 * (guard.on_ns / guard.off_ns - 1.0);
+        fmt::print("  finite-state guard, {} ({} bodies): {:.0f} ns per step on, {:.0f} ns off ({:+.1f}%)\n", scene,
+                   guard.bodies, guard.on_ns, guard.off_ns, overhead);
+        guard_csv += fmt::format("{},{},{:.1f},{:.1f},{:.2f}\n", scene, guard.bodies, guard.on_ns, guard.off_ns, overhead);
+    }
+    return write_file(dir / "guard-cost.csv", [&](std::ostream& out) { out << guard_csv; }) ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Stress corpus and accuracy bench of the Collision Response Workbook."};
+    app.require_subcommand(1);
+
+    bool full = false;
+    std::string csv_path;
+    std::string responder;
+    auto* stress = app.add_subcommand("stress", "Run the stress corpus and print its table.");
+    stress->add_flag("--full", full, "The full corpus (10,000 bodies, 10^6 steps; minutes) instead of the small one");
+    stress->add_option("--csv", csv_path, "Also write the table as CSV here");
+    stress->add_option("--responder", responder, "A response model by name (default: linear-impulse if linked, else the tools' own impulse)");
+
+    std::string out_dir = "accuracy";
+    auto* bench = app.add_subcommand("bench", "Sweep time step, substeps, integrator and contact timing; write one CSV per family.");
+    bench->add_option("--out", out_dir, "Folder for the CSV files");
+    bench->add_option("--responder", responder, "A response model by name (default as for stress)");
+
+    CLI11_PARSE(app, argc, argv);
+    try {
+        if (*stress) return run_stress_command(full, csv_path, responder);
+        if (*bench) return run_bench_command(out_dir, responder);
+    } catch (const CLI::Error& error) {
+        return app.exit(error);
+    }
+    return 0;
+}

@@ -1,0 +1,235 @@
+#include "stress.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "workbook/guards.hpp"
+#include "workbook/probes.hpp"
+
+namespace workbook::accuracy {
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+/// A fixed seed, so the corpus is the same scene every run.
+constexpr std::uint64_t corpus_seed = 13;
+
+std::vector<RigidBody> walls(const Box& box) {
+    return {make_immovable_plane({1, 0, 0}, box.low),  make_immovable_plane({-1, 0, 0}, box.high),
+            make_immovable_plane({0, 1, 0}, box.low),  make_immovable_plane({0, -1, 0}, box.high),
+            make_immovable_plane({0, 0, 1}, box.low),  make_immovable_plane({0, 0, -1}, box.high)};
+}
+
+Box cube(const Vector3& centre, double half) {
+    return {centre - Vector3{half, half, half}, centre + Vector3{half, half, half}};
+}
+
+/// `count` balls on a grid inside `box` (no initial overlaps), random directions at `speed`.
+std::vector<RigidBody> balls_in(const Box& box, int count, double radius, double speed, double restitution,
+                                std::uint64_t seed) {
+    std::mt19937_64 random(seed);
+    std::normal_distribution<double> gauss;
+    const Vector3 size = box.high - box.low;
+    const double spacing = 2.5 * radius;
+    const int per_axis = std::max(1, static_cast<int>((std::min({size.x, size.y, size.z}) - 2 * radius) / spacing));
+    std::vector<RigidBody> balls;
+    for (int i = 0; i < count; ++i) {
+        const int x = i % per_axis;
+        const int y = (i / per_axis) % per_axis;
+        const int z = i / (per_axis * per_axis);
+        const Vector3 at = box.low + Vector3{radius * 1.5 + spacing * x, radius * 1.5 + spacing * y,
+                                             radius * 1.5 + spacing * z};
+        Vector3 direction{gauss(random), gauss(random), gauss(random)};
+        direction = normalized(direction);
+        RigidBody ball = make_sphere(1.0, radius, at, direction * speed);
+        ball.restitution = restitution;
+        balls.push_back(ball);
+    }
+    return balls;
+}
+
+WorldSettings settings_with(double dt, const Vector3& gravity) {
+    WorldSettings s;
+    s.time_step = dt;
+    s.gravity = gravity;
+    return s;
+}
+
+StressScene boxed(std::string name, std::string what, std::uint64_t steps, int count, double speed, double restitution,
+                  double dt, const Vector3& gravity, const Vector3& centre = {}, double half = 5.0,
+                  double radius = 0.25) {
+    const Box box = cube(centre, half);
+    StressScene scene;
+    scene.name = std::move(name);
+    scene.what = std::move(what);
+    scene.steps = steps;
+    scene.box = box;
+    scene.build = [=](const ResponseModel& model) {
+        std::vector<RigidBody> bodies = walls(box);
+        for (const RigidBody& ball : balls_in(box, count, radius, speed, restitution, corpus_seed)) bodies.push_back(ball);
+        return World(bodies, settings_with(dt, gravity), model);
+    };
+    return scene;
+}
+
+/// Two balls in free space, no gravity: momentum must hold.
+StressScene pair(std::string name, std::string what, std::uint64_t steps, RigidBody a, RigidBody b, double dt = 1.0 / 240) {
+    StressScene scene;
+    scene.name = std::move(name);
+    scene.what = std::move(what);
+    scene.steps = steps;
+    scene.check_momentum = true;
+    scene.build = [=](const ResponseModel& model) { return World({a, b}, settings_with(dt, {}), model); };
+    return scene;
+}
+
+RigidBody ball(double mass, const Vector3& at, const Vector3& velocity, double radius = 0.5) {
+    return make_sphere(mass, radius, at, velocity);
+}
+
+double energy_scale(const World& world) {
+    double scale = 0.0;
+    const double g = length(world.settings().gravity);
+    for (const RigidBody& body : world.bodies())
+        if (!body.is_immovable()) scale += kinetic_energy(body) + body.mass() * g * length(body.position);
+    return scale;
+}
+
+double momentum_scale(const World& world) {
+    double scale = 0.0;
+    for (const RigidBody& body : world.bodies())
+        if (!body.is_immovable()) scale += body.mass() * length(body.velocity);
+    return scale;
+}
+
+/// How far any centre lies outside the box, m.
+double escape(const World& world, const Box& box) {
+    double worst = 0.0;
+    for (const RigidBody& body : world.bodies()) {
+        if (body.is_immovable()) continue;
+        const Vector3& x = body.position;
+        worst = std::max({worst, box.low.x - x.x, x.x - box.high.x, box.low.y - x.y, x.y - box.high.y,
+                          box.low.z - x.z, x.z - box.high.z});
+    }
+    return worst;
+}
+
+}  // namespace
+
+std::vector<StressScene> stress_corpus(bool full) {
+    const Vector3 earth{0.0, -9.81, 0.0};
+    const std::uint64_t long_run = full ? 1'000'000 : 20'000;
+    std::vector<StressScene> corpus;
+    corpus.push_back(pair("mass-ratio-1e-9", "a 1 kg ball meets a 1e-9 kg ball head-on, e = 1", 600,
+                          ball(1.0, {-1, 0, 0}, {1, 0, 0}), ball(1e-9, {1, 0, 0}, {-1, 0, 0})));
+    corpus.push_back(pair("mass-ratio-1e9", "a 1 kg ball meets a 1e9 kg ball head-on, e = 1", 600,
+                          ball(1.0, {-1, 0, 0}, {1, 0, 0}), ball(1e9, {1, 0, 0}, {-1, 0, 0})));
+    {
+        StressScene scene = boxed("mass-ratios-in-box", "1e-9, 1 and 1e9 kg balls in a closed box, e = 1, no gravity",
+                                  full ? 100'000 : 5'000, 3, 2.0, 1.0, 1.0 / 240, {});
+        const auto inner = scene.build;
+        scene.build = [inner](const ResponseModel& model) {
+            World world = inner(model);
+            const double masses[] = {1e-9, 1.0, 1e9};
+            for (std::size_t i = 0; i < 3; ++i) {
+                RigidBody& b = world.bodies()[6 + i];
+                b.inverse_mass = 1.0 / masses[i];
+                b.inertia_body = solid_sphere_inertia(masses[i], b.shape.radius);
+                b.update_world_inertia();
+            }
+            return world;
+        };
+        corpus.push_back(scene);
+    }
+    corpus.push_back(boxed("speed-1e4-box", "one ball at 1e4 m/s in a 10 m box (42 m per step), e = 1", 2'400, 1, 1e4,
+                           1.0, 1.0 / 240, {}));
+    corpus.push_back(pair("speed-1e4-pair", "two balls closing at 2e4 m/s (83 m per step), e = 1", 240,
+                          ball(1.0, {-100, 0, 0}, {1e4, 0, 0}, 0.1), ball(1.0, {100, 0, 0}, {-1e4, 0, 0}, 0.1)));
+    corpus.push_back(boxed("time-step-1e-6", "20 balls falling in a box at dt = 1e-6 s, e = 0.9",
+                           full ? 1'000'000 : 5'000, 20, 1.0, 0.9, 1e-6, earth));
+    corpus.push_back(boxed("time-step-0.1", "20 balls falling in a box at dt = 0.1 s, e = 0.9", 2'000, 20, 1.0, 0.9,
+                           0.1, earth));
+    if (full)
+        corpus.push_back(boxed("bodies-10000", "10,000 balls in a box, e = 1, no gravity", 30, 10'000, 1.0, 1.0,
+                               1.0 / 240, {}, {}, 20.0, 0.25));
+    else
+        corpus.push_back(boxed("bodies-300", "300 balls in a box, e = 1, no gravity (10,000 in the full corpus)", 40, 300,
+                               1.0, 1.0, 1.0 / 240, {}, {}, 5.0, 0.25));
+    corpus.push_back(boxed(full ? "steps-1e6" : "steps-2e4", "two balls in a box for many steps, e = 1, no gravity",
+                           long_run, 2, 3.0, 1.0, 1.0 / 240, {}));
+    corpus.push_back(pair("deep-overlap", "two balls starting 90% of a radius inside each other, approaching", 240,
+                          ball(1.0, {-0.05, 0, 0}, {1, 0, 0}), ball(2.0, {0.05, 0, 0}, {-1, 0, 0})));
+    corpus.push_back(pair("coincident-centres", "two balls with the same centre (the normal must still be defined)", 240,
+                          ball(1.0, {0, 0, 0}, {0.5, 0, 0}), ball(3.0, {0, 0, 0}, {0, 0, 0})));
+    corpus.push_back(boxed("far-from-origin", "20 balls falling in a box centred 1e6 m from the origin on every axis", 2'400,
+                           20, 1.0, 0.9, 1.0 / 240, earth, {1e6, 1e6, 1e6}));
+    corpus.push_back(boxed("zero-gravity", "200 balls in a box, e = 1, no gravity", full ? 20'000 : 100, 200, 2.0, 1.0,
+                           1.0 / 240, {}));
+    corpus.push_back(boxed("gravity-100g", "200 balls in a box under 100 g, e = 0.5", full ? 20'000 : 150, 200, 2.0, 0.5,
+                           1.0 / 240, {0.0, -981.0, 0.0}));
+    return corpus;
+}
+
+StressResult run_stress(const StressScene& scene, const ResponseModel& model,
+                        const std::function<void(std::uint64_t)>& progress) {
+    StressResult result;
+    result.scene = scene.name;
+    const auto started = std::chrono::steady_clock::now();
+    World world = scene.build(model);
+    result.bodies = world.bodies().size();
+    const Probes start = world.probes();
+    const double e_scale = energy_scale(world);
+    const double p_scale = momentum_scale(world);
+    const Box box = scene.box.value_or(Box{});
+    const double box_allowed =
+        64.0 * eps * (length(box.low) + length(box.high) + length(box.high - box.low));
+
+    const auto note = [&result](double ratio, const char* invariant) {
+        if (ratio > result.worst) {
+            result.worst = ratio;
+            result.worst_invariant = invariant;
+        }
+    };
+    const std::uint64_t every = std::max<std::uint64_t>(1, scene.steps / 100);
+    try {
+        for (std::uint64_t n = 1; n <= scene.steps; ++n) {
+            world.step();
+            result.steps = n;
+            const Probes now = world.probes();
+            const double rounding = 16.0 * eps * static_cast<double>(n + 1);
+            if (scene.check_energy) {
+                const double gain = now.total_energy() - start.total_energy();
+                const double ratio = gain <= 0.0 ? 0.0 : gain / (rounding * e_scale);
+                result.energy_ratio = std::max(result.energy_ratio, ratio);
+                note(ratio, "energy");
+            }
+            if (scene.check_momentum) {
+                const double drift = length(now.linear_momentum - start.linear_momentum);
+                const double ratio = drift == 0.0 ? 0.0 : drift / (rounding * p_scale);
+                result.momentum_ratio = std::max(result.momentum_ratio, ratio);
+                note(ratio, "momentum");
+            }
+            if (scene.box) {
+                const double out = escape(world, box);
+                result.box_escape = std::max(result.box_escape, out);
+                const double ratio = out <= 0.0 ? 0.0 : out / box_allowed;
+                result.box_ratio = std::max(result.box_ratio, ratio);
+                note(ratio, "box");
+            }
+            if (progress && n % every == 0) progress(n);
+        }
+    } catch (const NonFiniteState& error) {
+        result.error = error.what();
+        result.worst_invariant = "finite";
+        result.worst = std::numeric_limits<double>::infinity();
+    }
+    if (result.worst_invariant.empty()) result.worst_invariant = "-";
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+}  // namespace workbook::accuracy
