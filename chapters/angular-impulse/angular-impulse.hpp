@@ -2,8 +2,8 @@
 /// \file
 /// Chapter 4, angular impulses: the functions the student writes.
 ///
-/// Shared by skeleton/angular_impulse.cpp (the student's copy) and solutions/angular_impulse.cpp
-/// (the reference), so the two can never disagree on a signature.
+/// Shared by skeleton/angular_impulse.cpp (the student's copy) and the reference solution, so the two
+/// can never disagree on a signature.
 
 #include "workbook/contact.hpp"
 #include "workbook/matrix3.hpp"

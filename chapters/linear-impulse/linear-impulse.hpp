@@ -2,8 +2,8 @@
 /// \file
 /// Chapter 3, linear impulses with restitution: the functions the student writes.
 ///
-/// Shared by skeleton/linear_impulse.cpp (the student's copy) and solutions/linear_impulse.cpp
-/// (the reference), so the two can never disagree on a signature.
+/// Shared by skeleton/linear_impulse.cpp (the student's copy) and the reference solution, so the two
+/// can never disagree on a signature.
 
 #include "workbook/contact.hpp"
 #include "workbook/restitution.hpp"

@@ -2,8 +2,8 @@
 /// \file
 /// Chapter 2, the projection method: the functions the student writes.
 ///
-/// One declaration shared by skeleton/projection.cpp (the student's copy), solutions/projection.cpp
-/// (the reference), the tests and the table of response models, so they cannot disagree.
+/// One declaration shared by skeleton/projection.cpp (the student's copy), the reference solution,
+/// the tests and the table of response models, so they cannot disagree.
 
 #include "workbook/contact.hpp"
 #include "workbook/response_model.hpp"
