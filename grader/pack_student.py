@@ -29,6 +29,7 @@ EXCLUDED = {
     "tests/site": "the browser test of the instructor's site",
     "grader": "the instructor's grader",
     ".ci": "the workbook's own CI",
+    "docs/adding-a-chapter.md": "the authors' guide, which quotes the grader's wire and describes the solutions",
 }
 
 
@@ -75,7 +76,8 @@ def main():
     args = parser.parse_args()
     kept = write_pack(args.out)
     print(f"Student edition written to {pathlib.Path(args.out).resolve()} ({kept} files).")
-    print("Left out: " + "; ".join(f"{path}/ ({why})" for path, why in EXCLUDED.items()))
+    print("Left out: " + "; ".join(f"{path}{'' if '.' in pathlib.PurePath(path).name[1:] else '/'} ({why})"
+                                  for path, why in EXCLUDED.items()))
     print("Hand the folder (or an archive of it) to students; they start with its README.md.")
     return 0
 

@@ -15,9 +15,10 @@ import pack_student  # noqa: E402
 sys.path.insert(0, str(ROOT / "tools"))
 import workbook_files  # noqa: E402
 
-SECRET_FOLDERS = ["solutions", "tests/hidden", "tests/mutants", "tests/hostile", "grader"]
-# Answers live in C++: the reference, hidden tests and mutants. (The grader's Python is kept
-# out of the pack by the file-list test; its boilerplate lines prove nothing here.)
+# Answers live in C++: the reference, hidden tests and mutants. (The grader and the hostile
+# submissions are kept out of the pack by the file-list test; they hold no answer, and their
+# boilerplate lines, such as a catch clause, prove nothing here.)
+SECRET_FOLDERS = ["solutions", "tests/hidden", "tests/mutants"]
 SECRET_CODE = {".cpp", ".hpp"}
 PUBLIC_FOLDERS = ["skeleton", "tests/steps", "tests/engine", "tests/support", "engine", "chapters", "tools"]
 
