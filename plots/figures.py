@@ -146,7 +146,10 @@ def quote(text):
 
 
 def number(value, unit):
-    return f"{value:.3f}".replace("-", "\u2212") + " " + unit
+    """Three decimals with a true minus sign; a value that rounds to zero is 0.000, never −0.000
+    (an energy change of -1e-16 J at e = 1 is rounding, not a loss)."""
+    text = f"{value:.3f}"
+    return (text if text.strip("-0.") else "0.000").replace("-", "\u2212") + " " + unit
 
 
 def curves(datasets, series, factor, axes=""):
