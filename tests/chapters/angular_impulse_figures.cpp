@@ -268,6 +268,9 @@ TEST_CASE("The tennis-racket box flips at the closed-form period while |L| and E
         CHECK(text.find(three_digits(w0.y) + " rad/s") != std::string::npos);
     }
     CHECK(scene.description.find(three_digits(w0.x) + " rad/s") != std::string::npos);
+    const std::string page = read_text(fs::path(WORKBOOK_SOURCE_DIR) / "chapters" / "angular-impulse" / "chapter.md");
+    CHECK(page.find("for this box it is " + three_digits(predicted) + " s") != std::string::npos);
+    CHECK(page.find("within \\f$10^{-3}\\f$ of it") != std::string::npos);  // the bound checked above
 }
 
 namespace {
