@@ -22,6 +22,7 @@ import tempfile
 from pathlib import Path
 
 import families
+import spin
 
 PLOTS = Path(__file__).resolve().parent
 SOURCE = PLOTS.parent
@@ -58,9 +59,12 @@ def read_csv(path):
 SCENE_TIME_LIMIT = 120
 
 
-def run_scene(simulator, scene, csv_path):
+def run_scene(simulator, scene, csv_path, trajectory=None):
+    """Runs the scene into `csv_path` (and every body's state per step into `trajectory`, if
+    given); returns the time series as read_csv() does."""
+    extra = ["--trajectory", str(trajectory)] if trajectory else []
     try:
-        result = subprocess.run([str(simulator), "run", str(scene), "--csv", str(csv_path), "--quiet"],
+        result = subprocess.run([str(simulator), "run", str(scene), "--csv", str(csv_path), "--quiet", *extra],
                                 capture_output=True, text=True, timeout=SCENE_TIME_LIMIT)
     except subprocess.TimeoutExpired:
         raise RuntimeError(f"{simulator} ran {scene} for more than {SCENE_TIME_LIMIT} s and was stopped "
@@ -142,7 +146,10 @@ def quote(text):
 
 
 def number(value, unit):
-    return f"{value:.3f}".replace("-", "\u2212") + " " + unit
+    """Three decimals with a true minus sign; a value that rounds to zero is 0.000, never −0.000
+    (an energy change of -1e-16 J at e = 1 is rounding, not a loss)."""
+    text = f"{value:.3f}"
+    return (text if text.strip("-0.") else "0.000").replace("-", "\u2212") + " " + unit
 
 
 def curves(datasets, series, factor, axes=""):
@@ -434,9 +441,20 @@ def main():
             what = ("your code over the reference" if have_reference else "your code") if args.student else "reference"
             print(f"figures: {args.chapter}/{scene.name} ({what}) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
             try:
-                if "sweep" in json.loads(scene.read_text()):
+                description = json.loads(scene.read_text())
+                if "sweep" in description:
                     draw_sweep(scene, args.out, stem, args.sim if have_reference else None,
                                args.student_sim if args.student else None)
+                    continue
+                watched = spin.watched_body(description)
+                if watched is not None:  # a box turning freely: its spin in its own frame
+                    sims = ([("reference", args.sim)] if have_reference else []) + \
+                           ([("your code", args.student_sim)] if args.student else [])
+                    runs = []
+                    for n, (who, sim) in enumerate(sims):
+                        path, trajectory = Path(scratch, f"{stem}.{n}.csv"), Path(scratch, f"{stem}.{n}.trajectory.csv")
+                        runs.append((who, (path, run_scene(sim, scene, path, trajectory)), trajectory))
+                    spin.draw(scene, description, watched, runs, args.out, stem)
                     continue
                 reference = student = None
                 if have_reference:

@@ -45,6 +45,10 @@ set style line 13 lc rgb c_green lw 2.5
 set style line 21 lc rgb c_purple lw 2.5
 set style line 22 lc rgb c_sky lw 2.5
 set style line 23 lc rgb c_yellow lw 2.5
+# angular velocity in the body frame about x, y, z (plots/spin.py)
+set style line 51 lc rgb c_blue lw 2.5
+set style line 52 lc rgb c_vermillion lw 2.5
+set style line 53 lc rgb c_green lw 2.5
 # deepest penetration (the third panel of a position corrector's figures)
 set style line 41 lc rgb c_vermillion lw 2.5
 # one curve per value of a sweep (depth against step for several fractions beta)
