@@ -392,7 +392,9 @@ class Gradescope:
             self.modes = {n: archive.getinfo(n).external_attr >> 16 for n in ("setup.sh", "run_autograder")}
         self.sources_before = self._apt_sources()
         subprocess.run(["unzip", "-q", str(zip_path), "-d", str(self.root / "source")], check=True)
-        env = {**os.environ, "CMAKE_CXX_COMPILER_LAUNCHER": "ccache"}
+        # As Gradescope runs it: no compiler cache (a fresh machine has none), whatever the
+        # caller's environment says.
+        env = {k: v for k, v in os.environ.items() if k != "CMAKE_CXX_COMPILER_LAUNCHER"}
         self.setup = subprocess.run(["./setup.sh"], cwd=self.root / "source", env=env, capture_output=True, text=True,
                                     timeout=900)
         self.sources_after = self._apt_sources()

@@ -84,7 +84,7 @@ class OffDebian(unittest.TestCase):
         self.assertIn("sudo dnf install cmake ninja-build", run.stderr)
         self.assertIn("brew install cmake ninja", run.stderr)
 
-    def test_the_student_edition_builds_and_checks_with_clang_alone(self):
+    def test_the_student_edition_builds_from_scratch_and_checks_with_clang_alone(self):
         pack = self.root / "workbook-student"
         pack_student.write_pack(pack)
         env = self.env("clang-alone", GCC, CXX="clang++")
@@ -93,10 +93,26 @@ class OffDebian(unittest.TestCase):
             output = run.stdout + run.stderr
             self.assertEqual(run.returncode, 1, output[-3000:])
             self.assertIn("FAIL  Step 1", run.stdout, output[-3000:])
+            self.assertIn("0 of", run.stdout, output[-3000:])
+            self.assertNotIn("PASS  Step", run.stdout, output[-3000:])
+            self.assertIn("Law broken:", run.stdout)
             self.assertIn(" steps pass.", run.stdout)
             self.assertNotIn("apt-get", run.stderr)
         cache = (pack / "build/student/CMakeCache.txt").read_text()
         self.assertRegex(cache, r"CMAKE_CXX_COMPILER:\w+=\S*clang\+\+")
+        # Its ctest registers the chapter steps, one test per step, under the student preset,
+        # and they fail on the untouched skeleton as check does.
+        listing = subprocess.run(["ctest", "--preset", "student", "-N"], cwd=pack, env=env, capture_output=True,
+                                 text=True, timeout=120)
+        for chapter in workbook_files.chapters(pack):
+            self.assertIn(f"{chapter}.step1.", listing.stdout, listing.stdout + listing.stderr)
+        steps = subprocess.run(["ctest", "--preset", "student", "-L", "your-steps"], cwd=pack, env=env,
+                               capture_output=True, text=True, timeout=600)
+        self.assertNotEqual(steps.returncode, 0, "the untouched skeleton's steps must fail under ctest too")
+        self.assertIn("0% tests passed", steps.stdout, steps.stdout[-2000:])
+        solutions = self.workbook(pack, env, "check", "inelastic", "--solutions")
+        self.assertNotEqual(solutions.returncode, 0)
+        self.assertIn("no solutions", solutions.stderr)
         scene = next((pack / "chapters").glob("*/scenes/*.json"))
         run = self.workbook(pack, env, "run", str(scene), timeout=1500)
         self.assertEqual(run.returncode, 0, (run.stdout + run.stderr)[-3000:])

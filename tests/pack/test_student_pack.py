@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The student edition: built into a temporary folder, built there from scratch, checked
-there, and proved free of solution and hidden-test text by its file list and its content."""
+"""The student edition: written into a temporary folder, its quick start run there from
+scratch, and proved free of solution and hidden-test text by its file list and its content.
+(test_off_debian.py checks every chapter of a pack from scratch, with Clang alone.)"""
 import pathlib
 import re
 import subprocess
@@ -74,7 +75,11 @@ class StudentPackTest(unittest.TestCase):
 
     def test_the_quick_start_of_the_pack_works(self):
         first_chapter = pack_student_chapters(self.pack)[0]
-        for command in (["./workbook", "book"], ["./workbook", "figures", first_chapter], ["./workbook", "test"]):
+        # The test command's sanitizer half builds and runs the same sources as this tree's own
+        # sanitizer half, so here it would only double the suite's time; the pack's check of
+        # every chapter, from scratch and with Clang alone, is in test_off_debian.py.
+        for command in (["./workbook", "book"], ["./workbook", "figures", first_chapter],
+                        ["./workbook", "test", "--without-sanitizers"]):
             run = subprocess.run(command, cwd=self.pack, capture_output=True, text=True, timeout=1800)
             self.assertEqual(run.returncode, 0, f"{' '.join(command)} failed in the pack:\n{(run.stdout + run.stderr)[-3000:]}")
         site = self.pack / "build/dev/book/site/html/chapter_inelastic.html"
@@ -84,29 +89,6 @@ class StudentPackTest(unittest.TestCase):
                         "the pack draws its figures from the student's code")
         self.assertIn("tests: ", run.stdout)
         self.assertIn(" 0 failed", run.stdout)
-
-    def test_the_pack_builds_from_scratch_and_check_fails_every_step_of_the_skeleton(self):
-        for chapter in pack_student_chapters(self.pack):
-            run = subprocess.run(["./workbook", "check", chapter], cwd=self.pack, capture_output=True, text=True, timeout=1200)
-            self.assertNotEqual(run.returncode, 0, "an untouched skeleton must not pass check")
-            output = run.stdout
-            self.assertIn("0 of", output, output[-2000:])
-            self.assertNotIn("PASS  Step", output, output[-2000:])
-            self.assertIn("FAIL  Step 1", output, (run.stdout + run.stderr)[-3000:])
-            self.assertIn("Law broken:", output)
-        # Its ctest registers the chapter steps, one test per step, under the student preset.
-        listing = subprocess.run(["ctest", "--preset", "student", "-N"], cwd=self.pack, capture_output=True, text=True,
-                                 timeout=120)
-        for chapter in pack_student_chapters(self.pack):
-            self.assertIn(f"{chapter}.step1.", listing.stdout, listing.stdout + listing.stderr)
-        steps = subprocess.run(["ctest", "--preset", "student", "-L", "your-steps"], cwd=self.pack, capture_output=True,
-                               text=True, timeout=600)
-        self.assertNotEqual(steps.returncode, 0, "the untouched skeleton's steps must fail under ctest too")
-        self.assertIn("0% tests passed", steps.stdout, steps.stdout[-2000:])
-        solutions = subprocess.run(["./workbook", "check", "inelastic", "--solutions"], cwd=self.pack,
-                                   capture_output=True, text=True, timeout=120)
-        self.assertNotEqual(solutions.returncode, 0)
-        self.assertIn("no solutions", solutions.stderr)
 
     def test_help_and_readme_speak_only_of_what_the_pack_has(self):
         help_text = subprocess.run(["./workbook", "help"], cwd=self.pack, capture_output=True, text=True).stdout
