@@ -8,15 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "chapter_page.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
@@ -48,23 +46,10 @@ Vector3 angular_momentum(std::span<const RigidBody> bodies) {
     return sum;
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    INFO("reading " << path);
-    REQUIRE(in.good());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+workbook::testing::ChapterPage chapter_page() { return workbook::testing::read_chapter_page(WORKBOOK_SOURCE_DIR, "angular-impulse"); }
 
-/// The caption of the page's figure of `scene`: the quoted text after its \\image line.
-std::string caption_of(const std::string& scene) {
-    const std::string page = read_text(fs::path(WORKBOOK_SOURCE_DIR) / "chapters" / "angular-impulse" / "chapter.md");
-    const std::string image = "\\figurefile{angular-impulse/" + scene + "} \"";
-    const std::size_t begin = page.find(image);
-    INFO("the page should show " << image);
-    REQUIRE(begin != std::string::npos);
-    const std::size_t text = begin + image.size();
-    return page.substr(text, page.find('"', text) - text);
-}
+/// The caption of the page's figure of `scene`.
+std::string caption_of(const std::string& scene) { return workbook::testing::figure_caption(chapter_page(), "angular-impulse/" + scene); }
 
 /// The complete elliptic integral of the first kind K(k), from its modulus' complement
 /// k' = sqrt(1 - k^2), by the arithmetic-geometric mean: K = pi / (2 AGM(1, k')). Taking k'
@@ -79,11 +64,8 @@ double elliptic_k_from_complement(double complement) {
     return std::numbers::pi / (2.0 * a);
 }
 
-std::string three_digits(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
-    return text;
-}
+/// The captions and descriptions print their numbers to three significant digits.
+std::string three_digits(double v) { return workbook::testing::page_number(v, 3); }
 
 }  // namespace
 
@@ -268,7 +250,7 @@ TEST_CASE("The tennis-racket box flips at the closed-form period while |L| and E
         CHECK(text.find(three_digits(w0.y) + " rad/s") != std::string::npos);
     }
     CHECK(scene.description.find(three_digits(w0.x) + " rad/s") != std::string::npos);
-    const std::string page = read_text(fs::path(WORKBOOK_SOURCE_DIR) / "chapters" / "angular-impulse" / "chapter.md");
+    const std::string page = chapter_page().text;
     CHECK(page.find("for this box it is " + three_digits(predicted) + " s") != std::string::npos);
     CHECK(page.find("within \\f$10^{-3}\\f$ of it") != std::string::npos);  // the bound checked above
 }

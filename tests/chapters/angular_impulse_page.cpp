@@ -10,17 +10,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <numbers>
-#include <regex>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "angular-impulse.hpp"
+#include "chapter_page.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
 #include "workbook/world.hpp"
@@ -34,17 +31,11 @@ constexpr double degrees = std::numbers::pi / 180.0;
 /// The page with every run of white space made one space, so that a phrase wrapped over two
 /// lines is still found.
 std::string page_text() {
-    std::ifstream in(WORKBOOK_SOURCE_DIR "/chapters/angular-impulse/chapter.md");
-    REQUIRE(in.good());
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return std::regex_replace(text, std::regex(R"(\s+)"), " ");
+    return workbook::testing::fold_white_space(workbook::testing::read_chapter_page(WORKBOOK_SOURCE_DIR, "angular-impulse").text);
 }
 
-std::string three_digits(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
-    return text;
-}
+/// The page prints these numbers to three significant digits.
+std::string three_digits(double v) { return workbook::testing::page_number(v, 3); }
 
 /// A plank of 3 kg, 4 m long and 2 m tall, landing flat at 4 m/s (e = 0.5) on a face `width`
 /// wide, turned 0.3 rad about the vertical: its four bottom corners, as the hidden test of

@@ -8,48 +8,30 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <numbers>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "angular-impulse.hpp"
+#include "chapter_page.hpp"
 #include "workbook/contact.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rigid_body.hpp"
 
 using namespace workbook;
+using workbook::testing::ChapterPage;
+using workbook::testing::check_step_tests_named_under_their_steps;
+using workbook::testing::check_worked_example;
+using workbook::testing::page_number;
+using workbook::testing::page_quantity;
+using workbook::testing::read_chapter_page;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    INFO("reading " << path);
-    REQUIRE(in.good());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+ChapterPage chapter_page() { return read_chapter_page(WORKBOOK_SOURCE_DIR, "angular-impulse"); }
 
-std::string chapter_text() { return read_text(WORKBOOK_SOURCE_DIR "/chapters/angular-impulse/chapter.md"); }
-
-/// A number as the page prints it: four significant digits, no trailing zeros.
-std::string num(double value) {
-    std::ostringstream out;
-    out.precision(4);
-    out << value;
-    return out.str();
-}
-
-std::string quantity(double value, const std::string& unit) { return num(value) + "\\,\\mathrm{" + unit + "}"; }
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
-
-std::string remove_all(std::string text, const std::string& piece) {
-    for (std::size_t at = text.find(piece); at != std::string::npos; at = text.find(piece, at)) text.erase(at, piece.size());
-    return text;
-}
+/// This page prints its numbers to four significant digits: the rod's cosines are irrational.
+constexpr int digits = 4;
 
 }  // namespace
 
@@ -100,62 +82,34 @@ TEST_CASE("chapter 4 worked example: every number of the tilted rod is the physi
 
     const std::string times = " \\cdot ";
     const std::vector<std::string> printed{
-        "m = " + quantity(m, "kg"),
-        "L = " + quantity(length_, "m"),
-        "\\theta = " + num(degrees) + "^\\circ",
-        "u = " + quantity(u, "m/s"),
-        "e = " + num(e),
+        "m = " + page_quantity(m, "kg", digits),
+        "L = " + page_quantity(length_, "m", digits),
+        "\\theta = " + page_number(degrees, digits) + "^\\circ",
+        "u = " + page_quantity(u, "m/s", digits),
+        "e = " + page_number(e, digits),
         "I = m L^2/12 = \\tfrac{1}{6}\\,\\mathrm{kg\\,m^2}",
-        "J = (1 + e)\\, m u / (1 + 3\\cos^2\\theta) = " + num(1.0 + e) + times + num(m) + times + num(u) + " / " + num(denominator) +
-            " = " + quantity(j, "N\\,s"),
-        "\\cos^2\\theta = " + num(cos2),
-        "\\omega' = 6 J \\cos\\theta / (m L) = " + quantity(spin, "rad/s"),
-        "v' = -u + J/m = " + quantity(v_after, "m/s"),
-        "u' = v' + \\omega' \\tfrac{L}{2}\\cos\\theta = " + quantity(end_after, "m/s"),
-        "E = \\tfrac12 m u^2 = " + quantity(e_before, "J"),
-        "E' = \\tfrac12 m v'^2 + \\tfrac12 I \\omega'^2 = " + num(e_linear) + " + " + num(e_rotational) + " = " + quantity(e_after, "J"),
-        "\\Delta E = \\tfrac12 (1 - e) J u = " + quantity(lost, "J"),
+        "J = (1 + e)\\, m u / (1 + 3\\cos^2\\theta) = " + page_number(1.0 + e, digits) + times + page_number(m, digits) + times +
+            page_number(u, digits) + " / " + page_number(denominator, digits) + " = " + page_quantity(j, "N\\,s", digits),
+        "\\cos^2\\theta = " + page_number(cos2, digits),
+        "\\omega' = 6 J \\cos\\theta / (m L) = " + page_quantity(spin, "rad/s", digits),
+        "v' = -u + J/m = " + page_quantity(v_after, "m/s", digits),
+        "u' = v' + \\omega' \\tfrac{L}{2}\\cos\\theta = " + page_quantity(end_after, "m/s", digits),
+        "E = \\tfrac12 m u^2 = " + page_quantity(e_before, "J", digits),
+        "E' = \\tfrac12 m v'^2 + \\tfrac12 I \\omega'^2 = " + page_number(e_linear, digits) + " + " +
+            page_number(e_rotational, digits) + " = " + page_quantity(e_after, "J", digits),
+        "\\Delta E = \\tfrac12 (1 - e) J u = " + page_quantity(lost, "J", digits),
     };
-    const std::string text = chapter_text();
-    const std::size_t begin = text.find("{#angular_impulse_worked_example}");
-    REQUIRE(begin != std::string::npos);
-    const std::size_t finish = text.find("\n## ", begin);
-    std::string example = text.substr(begin, finish - begin);
-    for (const std::string& formula : printed) {
-        INFO("the worked example should print: " << formula);
-        CHECK(contains(example, formula));
-    }
-    for (const std::string& formula : printed) example = remove_all(example, formula);
-    // Symbolic formulas, whose only digits are constants of the derivation.
-    for (const std::string symbolic : {"k = (1 + 3\\cos^2\\theta)/m", "{#angular_impulse_worked_example}", "angular_impulse_worked_example.cpp", "\\tfrac{L}{2}",
-                                       "3\\cos^2\\theta", "1 + 3\\cos", "^2", "(1 + e)", "step 3", "step 5", "1e-"})
-        example = remove_all(example, symbolic);
-    example = std::regex_replace(example, std::regex(R"(\\tfrac12)"), "");
-    std::smatch leftover;
-    if (std::regex_search(example, leftover, std::regex(R"([^\n]*[0-9][^\n]*)")))
-        FAIL("the worked example prints a number no check covers, in: " << leftover.str());
+    // Once the formulas are gone, only the derivation's constants (3\cos^2, \tfrac{L}{2}, ^2),
+    // step numbers and the 1e- of a tolerance may hold a digit.
+    check_worked_example(chapter_page(), {.anchor = "{#angular_impulse_worked_example}",
+                                          .formulas = printed,
+                                          .symbolic_text = {"k = (1 + 3\\cos^2\\theta)/m", "angular_impulse_worked_example.cpp",
+                                                            "\\tfrac{L}{2}", "3\\cos^2\\theta", "1 + 3\\cos", "^2", "(1 + e)", "step 3",
+                                                            "step 5", "1e-"},
+                                          .symbolic_patterns = {R"(\\tfrac12)"}});
 }
 
 TEST_CASE("chapter 4 exercise: the page names every public step test under its step", "[angular-impulse]") {
-    const std::string text = chapter_text();
-    const std::string tests = read_text(WORKBOOK_SOURCE_DIR "/tests/steps/angular_impulse.cpp");
-    const std::regex test_case(R"re(TEST_CASE\("([^"]+)",\s*"\[angular-impulse\]\[step:([0-9]+):([a-z-]+)\])re");
-    int found = 0;
-    for (auto it = std::sregex_iterator(tests.begin(), tests.end(), test_case); it != std::sregex_iterator(); ++it) {
-        ++found;
-        const std::string name = (*it)[1].str();
-        std::string title = (*it)[3].str();
-        for (char& ch : title)
-            if (ch == '-') ch = ' ';
-        const std::string heading = "### Step " + (*it)[2].str() + " \xC2\xB7 " + title;
-        INFO("step heading: " << heading << "; test: " << name);
-        const std::size_t begin = text.find(heading);
-        REQUIRE(begin != std::string::npos);
-        const std::size_t end = text.find("\n##", begin + heading.size());
-        const std::string step_text = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-        // The page may wrap a long name over two lines.
-        std::string flat = std::regex_replace(step_text, std::regex(R"(\s*\n\s*)"), " ");
-        CHECK(contains(flat, "`" + name + "`"));
-    }
+    const int found = check_step_tests_named_under_their_steps(chapter_page(), WORKBOOK_SOURCE_DIR "/tests/steps/angular_impulse.cpp");
     CHECK(found == 13);
 }

@@ -6,39 +6,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "chapter_page.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
 #include "workbook/time_series.hpp"
 
-namespace {
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    INFO("reading " << path);
-    REQUIRE(in.good());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// The caption of the figure `figure` in the page: the quoted text after its \image line.
-std::string caption(const std::string& page, const std::string& figure) {
-    const std::size_t at = page.find("\\figurefile{" + figure + "}");
-    INFO("the page shows " << figure);
-    REQUIRE(at != std::string::npos);
-    const std::size_t open = page.find('"', at);
-    const std::size_t close = page.find('"', open + 1);
-    return page.substr(open + 1, close - open - 1);
-}
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
-
-}  // namespace
+using workbook::testing::contains;
+using workbook::testing::figure_caption;
+using workbook::testing::read_chapter_page;
 
 TEST_CASE("the clay-drop caption and description state what the figure shows", "[inelastic]") {
     std::vector<std::string_view> responders;
@@ -79,12 +58,12 @@ TEST_CASE("the clay-drop caption and description state what the figure shows", "
     const std::string end_text = fmt::format("sinks to {:.1f} cm", 100.0 * depth_at_end);
     const std::string later_text = fmt::format("a further {:.3f} J", later_fall);
 
-    const std::string figure_caption = caption(read_text(WORKBOOK_SOURCE_DIR "/chapters/inelastic/chapter.md"), "inelastic/clay-drop");
+    const std::string caption = figure_caption(read_chapter_page(WORKBOOK_SOURCE_DIR, "inelastic"), "inelastic/clay-drop");
     for (const std::string& piece : {drift_text, lost_text, contact_text, end_text}) {
-        INFO("caption: " << figure_caption);
-        CHECK(contains(figure_caption, piece));
+        INFO("caption: " << caption);
+        CHECK(contains(caption, piece));
     }
-    CHECK_FALSE(contains(figure_caption, "rests on"));
+    CHECK_FALSE(contains(caption, "rests on"));
     for (const std::string& piece : {drift_text, lost_text, contact_text, end_text, later_text}) {
         INFO("description: " << scene.description);
         CHECK(contains(scene.description, piece));

@@ -2,7 +2,8 @@
 //
 // 1. The worked example: every number it prints is recomputed here, in closed form and with
 //    the engine (make_sphere, kinetic_energy, and the reference common_velocity, resolve and
-//    energy_lost), formatted the way the page prints it, and looked up in the page. After
+//    energy_lost), formatted the way the page prints it, and looked up in the page
+//    (tests/support/chapter_page.hpp does the reading, formatting and looking up). After
 //    every checked formula has been removed from the section, no digit may be left over
 //    except symbolic indices such as m_1 or "body 2", so a number added to the example without a check
 //    fails here.
@@ -11,65 +12,33 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>
-#include <cstddef>
-#include <fstream>
-#include <iterator>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "chapter_page.hpp"
 #include "inelastic.hpp"
 #include "workbook/contact.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rigid_body.hpp"
 
 using namespace workbook;
+using workbook::testing::ChapterPage;
+using workbook::testing::check_step_tests_named_under_their_steps;
+using workbook::testing::check_units_only_in_worked_example;
+using workbook::testing::check_worked_example;
+using workbook::testing::contains;
+using workbook::testing::page_fraction;
+using workbook::testing::page_number;
+using workbook::testing::page_quantity;
+using workbook::testing::read_chapter_page;
+using workbook::testing::section_with_anchor;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    INFO("reading " << path);
-    REQUIRE(in.good());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+ChapterPage chapter_page() { return read_chapter_page(WORKBOOK_SOURCE_DIR, "inelastic"); }
 
-std::string chapter_text() { return read_text(WORKBOOK_SOURCE_DIR "/chapters/inelastic/chapter.md"); }
-
-/// The lines from the heading that carries `anchor` up to the next heading of level 2.
-std::string section(const std::string& text, const std::string& anchor) {
-    const std::size_t heading = text.find(anchor);
-    INFO("looking for the section " << anchor);
-    REQUIRE(heading != std::string::npos);
-    const std::size_t begin = text.rfind("\n## ", heading);
-    const std::size_t end = text.find("\n## ", heading);
-    return text.substr(begin == std::string::npos ? 0 : begin, end == std::string::npos ? std::string::npos : end - begin);
-}
-
-/// A number as the page prints it: at most 12 significant digits, no trailing zeros.
-std::string num(double value) {
-    std::ostringstream out;
-    out.precision(12);
-    out << value;
-    return out.str();
-}
-
-/// A quantity as the page prints it inside a formula: 6\,\mathrm{kg\,m/s}.
-std::string quantity(double value, const std::string& unit) { return num(value) + "\\,\\mathrm{" + unit + "}"; }
-
-/// A fraction as the page prints it, after checking that it is the computed value.
-std::string fraction(double value, int numerator, int denominator) {
-    CHECK(std::abs(value - static_cast<double>(numerator) / static_cast<double>(denominator)) < 1e-12);
-    return "\\tfrac{" + std::to_string(numerator) + "}{" + std::to_string(denominator) + "}";
-}
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
-
-std::string remove_all(std::string text, const std::string& piece) {
-    for (std::size_t at = text.find(piece); at != std::string::npos; at = text.find(piece, at)) text.erase(at, piece.size());
-    return text;
-}
+/// The page prints \tfrac{2}{3} for the reduced mass; the closed form gives it to rounding.
+std::string fraction(double value, int numerator, int denominator) { return page_fraction(value, numerator, denominator, 1e-12); }
 
 }  // namespace
 
@@ -122,80 +91,46 @@ TEST_CASE("chapter 1 worked example: every number in the text is the physics", "
     const std::string times = " \\cdot ";
     const std::string half = "\\tfrac12";
     const std::vector<std::string> printed{
-        "m_1 = " + quantity(m1, "kg"),
-        "v_1 = " + quantity(v1, "m/s"),
-        "m_2 = " + quantity(m2, "kg"),
-        "v_2 = " + quantity(v2, "m/s"),
-        "p = m_1 v_1 + m_2 v_2 = " + num(m1) + times + num(v1) + " + " + num(m2) + times + num(v2) + " = " +
-            quantity(p, "kg\\,m/s"),
-        "v' = p / (m_1 + m_2) = " + num(p) + " / " + num(m1 + m2) + " = " + quantity(shared, "m/s"),
-        "w_1 = " + quantity(w1, "kg^{-1}"),
-        "w_2 = " + quantity(w2, "kg^{-1}"),
-        "(w_2 v_1 + w_1 v_2)/(w_1 + w_2) = (" + num(w2) + times + num(v1) + " + " + num(w1) + times + num(v2) + ")/" +
-            num(w1 + w2) + " = " + quantity(shared_inverse, "m/s"),
-        "(m_1 + m_2)\\,v' = " + quantity(p_after, "kg\\,m/s"),
-        "E = " + half + times + num(m1) + times + num(v1) + "^2 + " + half + times + num(m2) + times + num(v2) +
-            "^2 = " + quantity(e_before, "J"),
-        "E' = " + half + times + num(m1 + m2) + times + num(shared) + "^2 = " + quantity(e_after, "J"),
-        "\\mu = (" + num(m1) + times + num(m2) + ")/(" + num(m1) + " + " + num(m2) + ") = " + fraction(mu, 2, 3) +
-            "\\,\\mathrm{kg}",
-        "\\lvert v_1 - v_2\\rvert = " + quantity(relative_speed, "m/s"),
-        "\\Delta E = " + half + times + fraction(mu, 2, 3) + times + num(relative_speed) + "^2 = " + quantity(lost, "J"),
+        "m_1 = " + page_quantity(m1, "kg"),
+        "v_1 = " + page_quantity(v1, "m/s"),
+        "m_2 = " + page_quantity(m2, "kg"),
+        "v_2 = " + page_quantity(v2, "m/s"),
+        "p = m_1 v_1 + m_2 v_2 = " + page_number(m1) + times + page_number(v1) + " + " + page_number(m2) + times +
+            page_number(v2) + " = " + page_quantity(p, "kg\\,m/s"),
+        "v' = p / (m_1 + m_2) = " + page_number(p) + " / " + page_number(m1 + m2) + " = " + page_quantity(shared, "m/s"),
+        "w_1 = " + page_quantity(w1, "kg^{-1}"),
+        "w_2 = " + page_quantity(w2, "kg^{-1}"),
+        "(w_2 v_1 + w_1 v_2)/(w_1 + w_2) = (" + page_number(w2) + times + page_number(v1) + " + " + page_number(w1) + times +
+            page_number(v2) + ")/" + page_number(w1 + w2) + " = " + page_quantity(shared_inverse, "m/s"),
+        "(m_1 + m_2)\\,v' = " + page_quantity(p_after, "kg\\,m/s"),
+        "E = " + half + times + page_number(m1) + times + page_number(v1) + "^2 + " + half + times + page_number(m2) + times +
+            page_number(v2) + "^2 = " + page_quantity(e_before, "J"),
+        "E' = " + half + times + page_number(m1 + m2) + times + page_number(shared) + "^2 = " + page_quantity(e_after, "J"),
+        "\\mu = (" + page_number(m1) + times + page_number(m2) + ")/(" + page_number(m1) + " + " + page_number(m2) +
+            ") = " + fraction(mu, 2, 3) + "\\,\\mathrm{kg}",
+        "\\lvert v_1 - v_2\\rvert = " + page_quantity(relative_speed, "m/s"),
+        "\\Delta E = " + half + times + fraction(mu, 2, 3) + times + page_number(relative_speed) + "^2 = " +
+            page_quantity(lost, "J"),
     };
     // "A third of the kinetic energy is gone", and the general fraction m2 / (m1 + m2) it quotes.
     CHECK(std::abs(lost / e_before - 1.0 / 3.0) < 1e-12);
     CHECK(std::abs(lost / e_before - m2 / (m1 + m2)) < 1e-12);
 
-    const std::string text = chapter_text();
-    std::string example = section(text, "{#inelastic_worked_example}");
-    for (const std::string& formula : printed) {
-        INFO("the worked example should print: " << formula);
-        CHECK(contains(example, formula));
-    }
+    // Once the formulas are gone, only indices (m_1, "body 2") and \tfrac12 may hold a digit.
+    const ChapterPage page = chapter_page();
+    const std::string anchor = "{#inelastic_worked_example}";
+    check_worked_example(page, {.anchor = anchor,
+                                .formulas = printed,
+                                .symbolic_text = {"inelastic_worked_example.cpp"},
+                                .symbolic_patterns = {R"([mvw]_[12]\b)", R"(\\tfrac12)", R"((step|body) [0-9])"}});
     {
         INFO("the worked example should say what fraction is lost: A third");
-        CHECK(contains(example, "A third of the kinetic energy"));
+        CHECK(contains(section_with_anchor(page, anchor), "A third of the kinetic energy"));
     }
-
-    // Nothing numeric may remain once the checked formulas and the symbolic indices are gone.
-    for (const std::string& formula : printed) example = remove_all(example, formula);
-    example = remove_all(example, "{#inelastic_worked_example}");
-    example = remove_all(example, "inelastic_worked_example.cpp");
-    example = std::regex_replace(example, std::regex(R"([mvw]_[12]\b)"), "");
-    example = std::regex_replace(example, std::regex(R"(\\tfrac12)"), "");
-    example = std::regex_replace(example, std::regex(R"((step|body) [0-9])"), "");
-    std::smatch leftover;
-    if (std::regex_search(example, leftover, std::regex(R"([^\n]*[0-9][^\n]*)"))) {
-        FAIL("the worked example prints a number no check covers, in: " << leftover.str());
-    }
-
-    // Quantities with units belong in the checked example only.
-    const std::size_t example_begin = text.find("{#inelastic_worked_example}");
-    const std::size_t example_end = text.find("\n## ", example_begin);
-    const std::string outside = text.substr(0, example_begin) + text.substr(example_end);
-    if (std::regex_search(outside, leftover, std::regex(R"([0-9]\s*\\,\\mathrm\{[^}]*\})"))) {
-        FAIL("a quantity with a unit appears outside the checked worked example: " << leftover.str());
-    }
+    check_units_only_in_worked_example(page, anchor);
 }
 
 TEST_CASE("chapter 1 exercise: the page names every public step test under its step", "[inelastic]") {
-    const std::string text = chapter_text();
-    const std::string tests = read_text(WORKBOOK_SOURCE_DIR "/tests/steps/inelastic.cpp");
-    const std::regex test_case(R"re(TEST_CASE\("([^"]+)",\s*"\[inelastic\]\[step:([0-9]+):([a-z-]+)\])re");
-    int found = 0;
-    for (auto it = std::sregex_iterator(tests.begin(), tests.end(), test_case); it != std::sregex_iterator(); ++it) {
-        ++found;
-        const std::string name = (*it)[1].str();
-        std::string title = (*it)[3].str();
-        for (char& c : title)
-            if (c == '-') c = ' ';
-        const std::string heading = "### Step " + (*it)[2].str() + " \xC2\xB7 " + title;
-        INFO("step heading: " << heading << "; test: " << name);
-        const std::size_t begin = text.find(heading);
-        REQUIRE(begin != std::string::npos);
-        const std::size_t end = text.find("\n##", begin + heading.size());
-        const std::string step_text = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-        CHECK(contains(step_text, "`" + name + "`"));
-    }
+    const int found = check_step_tests_named_under_their_steps(chapter_page(), WORKBOOK_SOURCE_DIR "/tests/steps/inelastic.cpp");
     CHECK(found > 0);
 }
