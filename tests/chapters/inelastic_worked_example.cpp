@@ -22,16 +22,7 @@
 #include "workbook/rigid_body.hpp"
 
 using namespace workbook;
-using workbook::testing::ChapterPage;
-using workbook::testing::check_step_tests_named_under_their_steps;
-using workbook::testing::check_units_only_in_worked_example;
-using workbook::testing::check_worked_example;
-using workbook::testing::contains;
-using workbook::testing::page_fraction;
-using workbook::testing::page_number;
-using workbook::testing::page_quantity;
-using workbook::testing::read_chapter_page;
-using workbook::testing::section_with_anchor;
+using namespace workbook::testing;
 
 namespace {
 
