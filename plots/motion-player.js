@@ -91,7 +91,7 @@
     }
     for (var y = Math.ceil(b[2] / step) * step; y <= b[3]; y += step) {
       el("line", {x1: 0, x2: W, y1: sy(y), y2: sy(y)}, g);
-      el("text", {x: 4, y: sy(y) - 3, "font-size": 14, fill: "#404040"}, svg, label(y));
+      if (sy(y) > 48) el("text", {x: 4, y: sy(y) - 3, "font-size": 14, fill: "#404040"}, svg, label(y));  // the clock's corner
     }
     el("text", {x: W / 2, y: H + 36, "text-anchor": "middle", "font-size": 15}, svg, s.view.x + "   (" + s.view.name + "; vertical: " + s.view.y + ")");
     s.planes.forEach(function (p) {
@@ -114,7 +114,9 @@
       });
     });
     this.touches = s.runs.map(function (run) {
-      return run.touches.map(function (c, n) {
+      return run.touches.map(function (c, k) {
+        // One line down for each earlier touch still shown when this one begins.
+        var n = run.touches.filter(function (d, j) { return j < k && c.t - d.t <= s.touch_window; }).length;
         var colour = run.student ? "#CC79A7" : "#B2182B", group = el("g", {visibility: "hidden"}, svg);
         var x1 = sx(c.from[0]), y1 = sy(c.from[1]), x2 = sx(c.to[0]), y2 = sy(c.to[1]);
         var a = Math.atan2(y2 - y1, x2 - x1), h = 14;
@@ -193,7 +195,11 @@
           }
         });
       });
-      self.touches[r].forEach(function (c) { c.node.setAttribute("visibility", c.t <= self.t + 1e-12 ? "visible" : "hidden"); });
+      // A touch shows while it happens and for a moment after, as in the films (plots/motion.py).
+      self.touches[r].forEach(function (c) {
+        var on = c.t <= self.t + 1e-12 && self.t <= c.t + s.touch_window;
+        c.node.setAttribute("visibility", on ? "visible" : "hidden");
+      });
     });
     this.cursors.forEach(function (c) { c.node.setAttribute("x1", c.x(self.t)); c.node.setAttribute("x2", c.x(self.t)); });
     this.clock.textContent = "t = " + this.t.toFixed(4) + " s";

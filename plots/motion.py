@@ -71,6 +71,16 @@ def slow_motion_factor(duration):
     return next((f for f in SLOW_MOTION if duration * f >= SHORTEST_FILM - 1e-9), SLOW_MOTION[-1])
 
 
+# A touch is marked in a film (and the site's player) while it happens and for this long of
+# the film after, so that the picture does not fill with the arrows of touches long past.
+TOUCH_FILM_SECONDS = 1.5
+
+
+def touch_window(duration):
+    """How long, in simulated seconds, a film shows a touch after it began."""
+    return TOUCH_FILM_SECONDS / slow_motion_factor(duration)
+
+
 def stride_for(scene_spec, frames=1500):
     """A stride keeping about `frames` recorded frames (every step for short runs)."""
     steps = round(scene_spec["duration"] / scene_spec["time_step"])
@@ -441,13 +451,17 @@ class Canvas:
         self.arrows = 0
         self.labels = 0
 
-    def free_label(self, text, at, colour, align="center", side=1):
+    def free_label(self, text, at, colour, align="center", side=1, font="label_font"):
         """A label_font label beside the point `at` (above it for side 1, below for -1), moved
         a line further out for as long as it would cover a label placed before it."""
         box = self.box
         width = len(text) * self.text_size[0] * (box[1] - box[0])
         line = self.text_size[1] * (box[3] - box[2])
         x0 = at[0] - {"left": 0.0, "center": 0.5, "right": 1.0}[align] * width
+        # Inside the picture: a label that would run over its left or right edge starts (ends) there.
+        if x0 < box[0] or x0 + width > box[1]:
+            x0 = box[0] + 0.01 * (box[1] - box[0]) if x0 < box[0] else box[1] - 0.01 * (box[1] - box[0]) - width
+            at, align = (x0, at[1]), "left"
         # Lines out from the point while they stay inside the picture, then the other way.
         slots = [side * (1.0 + 1.3 * n) for n in range(40)]
         # The picture's top line is its note's (strobe.py).
@@ -458,7 +472,7 @@ class Canvas:
                 break
         self.taken.append((x0, x0 + width, y))
         # On a white ground, so that outlines behind the text do not cross it.
-        self.label(text, at, colour, align=align, offset=(0, offset), boxed=True)
+        self.label(text, at, colour, align=align, font=font, offset=(0, offset), boxed=True)
 
     def circle(self, centre, radius, colour, fill, width=2.0, dashed=False, opacity=0.15):
         self.objects += 1
@@ -499,6 +513,8 @@ class Canvas:
                           f"tc rgb '{colour}' noenhanced{' boxed' if boxed else ''}")
 
     def point(self, at, colour, size=0.6):
+        if self.box and not (self.box[0] <= at[0] <= self.box[1] and self.box[2] <= at[1] <= self.box[3]):
+            return  # gnuplot would draw it outside the plot (it clips objects, not points)
         self.labels += 1
         self.lines.append(f"set label {self.labels} '' at {at[0]!r},{at[1]!r} point pt 7 ps {size} lc rgb '{colour}' front")
 

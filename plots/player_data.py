@@ -75,7 +75,7 @@ def write(path, chapter, scene, runs, view, box, slow_motion):
         run_data.append({"student": student, "t": [trajectory.times[k] for k in frames], "shapes": shapes,
                          "touches": touches})
     data = {"chapter": chapter, "scene": scene.path.stem, "title": scene.title, "duration": scene.duration,
-            "slow_motion": slow_motion, "view": {"name": view.name, "x": view.xlabel, "y": view.ylabel},
+            "slow_motion": slow_motion, "touch_window": motion.TOUCH_FILM_SECONDS / slow_motion, "view": {"name": view.name, "x": view.xlabel, "y": view.ylabel},
             "box": list(box), "bodies": bodies, "key": [list(e) for e in motion.key_entries(scene)], "planes": planes,
             "runs": run_data}
     text = "(window.WorkbookMotion = window.WorkbookMotion || []).push(" + json.dumps(data, separators=(",", ":")) + ");\n"

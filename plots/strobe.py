@@ -159,10 +159,13 @@ def draw_paths(scene, trajectory, view, pitch, count, student=False, name="path"
 
 
 def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, label_side=1, pitch=None,
-                  count=SNAPSHOTS):
+                  count=SNAPSHOTS, between=None, font="label_font"):
     """At each touch's first step: the contact point, the normal as an arrow (from body 2
-    towards body 1, into body 1), and J and t beside it, clear of the other labels."""
+    towards body 1, into body 1), and J and t beside it, clear of the other labels. With
+    `between` = (t0, t1), only the touches that began in that time (a film's frame)."""
     for c in motion.contact_onsets(contacts):
+        if between and not between[0] <= c["t"] <= between[1]:
+            continue
         where = view_at(canvas.view, pitch, scene.duration, c["t"], count)
         length = motion.normal_arrow_length(scene, c, box)
         point = where.project([c["x"], c["y"], c["z"]])
@@ -176,7 +179,8 @@ def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, la
         middle = ((point[0] + end[0]) / 2, max(point[1], end[1]) if label_side > 0 else min(point[1], end[1]))
         where_x = (middle[0] - box[0]) / (box[1] - box[0])
         align = "left" if where_x < 0.3 else "right" if where_x > 0.7 else "center"
-        canvas.free_label(f"{motion.impulse_text(c['impulse'])} at t = {c['t']:.4g} s", middle, colour, align, label_side)
+        canvas.free_label(f"{motion.impulse_text(c['impulse'])} at t = {c['t']:.4g} s", middle, colour, align, label_side,
+                          font)
 
 
 def strobe_note(scene, view, snapshots=SNAPSHOTS, spread=False):
@@ -206,24 +210,27 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
         paths += c
     for n, (trajectory, contacts, student) in enumerate(runs):
         draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
-                      label_side=-1 if n else 1, pitch=pitch, count=snapshots)
+                      label_side=-1 if n else 1, pitch=pitch, count=snapshots,
+                      font="label_font" if key else "note_font")
     if note:
         canvas.label(strobe_note(scene, view, snapshots, pitch is not None), (0.01, 0.965), "#404040",
                      font="note_font", coords="graph")
     g = ["set size ratio -1", "set style textbox opaque noborder margins 1, 0.5", f"set xrange [{box[0]!r}:{box[1]!r}]",
          f"set yrange [{box[2]!r}:{box[3]!r}]", f"set xlabel {motion.quote(view.xlabel)}", f"set ylabel {motion.quote(view.ylabel)}",
-         f"set title {motion.quote(title)} font title_font noenhanced", "set format x '%g'", "set format y '%g'"]
+         f"set title {motion.quote(title)} font {'title_font' if key else 'label_font'} noenhanced",
+         "set format x '%g'", "set format y '%g'"]
     if pitch is not None:
         # The horizontal axis counts time: a tic under each outline, at its body's centre.
         centre = view.project(runs[0][0].states[0][motion.movable(scene)[0]][0])[0]
         times = snapshot_times(scene.duration, snapshots)
         names = [f"{t:.4g}" for t in times]
-        if sum(len(n) + 2 for n in names) * TEXT_SIZE[0] > 0.8:  # crowded: every other tic is named
+        if sum(len(n) + 2 for n in names) * text_size[0] > 0.6:  # crowded: every other tic is named
             names = [n if k % 2 == 0 else "" for k, n in enumerate(names)]
         tics = ", ".join(f"{motion.quote(n)} {view_at(view, pitch, scene.duration, t, snapshots).dx + centre!r}"
                          for n, t in zip(names, times))
-        g += [f"set xtics ({tics})", "unset mxtics",
-              "set xlabel 't / s (outlines side by side in time order, to the scale of the vertical axis)'"]
+        # A lone picture says how to read the axis; a strip's panels have their title for that.
+        meaning = " (outlines side by side in time order, to the scale of the vertical axis)" if key else ""
+        g += [f"set xtics ({tics})", "unset mxtics", f"set xlabel 't / s{meaning}'"]
     g += blocks + canvas.lines
     plot = ["NaN notitle"] + paths
     if key:
