@@ -30,7 +30,7 @@ FPS = 25
 SIZE = (1280, 720)
 GIF_WIDTH = 640
 ASPECT = 2.25   # width / height of the data box in a 16:9 frame with title and key
-TEXT_SIZE = (0.014, 0.05)  # one character of label_font, as fractions of the data box (strobe.TEXT_SIZE)
+TEXT_SIZE = (0.014, 0.066)  # one character of label_font, as fractions of the data box (strobe.TEXT_SIZE)
 
 
 slow_motion_factor = motion.slow_motion_factor

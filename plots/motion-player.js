@@ -113,20 +113,20 @@
         return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg), hands: hands};
       });
     });
+    // Each touch: an arrow along its normal at the contact point, and a line of text listed
+    // under the clock while it shows (several touches at once would cover one another).
     this.touches = s.runs.map(function (run) {
-      return run.touches.map(function (c, k) {
-        // One line down for each earlier touch still shown when this one begins.
-        var n = run.touches.filter(function (d, j) { return j < k && c.t - d.t <= s.touch_window; }).length;
+      return run.touches.map(function (c) {
         var colour = run.student ? "#CC79A7" : "#B2182B", group = el("g", {visibility: "hidden"}, svg);
         var x1 = sx(c.from[0]), y1 = sy(c.from[1]), x2 = sx(c.to[0]), y2 = sy(c.to[1]);
         var a = Math.atan2(y2 - y1, x2 - x1), h = 14;
         el("line", {x1: x1, y1: y1, x2: x2, y2: y2, stroke: colour, "stroke-width": 4}, group);
         el("polygon", {points: [x2 + h * Math.cos(a), y2 + h * Math.sin(a), x2 + h * Math.cos(a + 2.4), y2 + h * Math.sin(a + 2.4),
                                 x2 + h * Math.cos(a - 2.4), y2 + h * Math.sin(a - 2.4)].join(" "), fill: colour}, group);
-        el("text", {x: x2 + (Math.cos(a) >= -0.3 ? 12 : -12), y: y2 - 10 + 24 * n, "text-anchor": Math.cos(a) >= -0.3 ? "start" : "end",
-                    "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, group,
-           c.text + " at t = " + label(c.t) + " s");
-        return {t: c.t, node: group};
+        var text = el("text", {x: 12, y: 0, "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff",
+                               "stroke-width": 5, visibility: "hidden", "class": "wb-touch"}, svg,
+                      (run.student ? "your code: " : "") + c.text + " at t = " + label(c.t) + " s");
+        return {t: c.t, node: group, text: text};
       });
     });
     this.clock = el("text", {x: 12, y: 28, "font-size": 22, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, svg);
@@ -195,10 +195,15 @@
           }
         });
       });
-      // A touch shows while it happens and for a moment after, as in the films (plots/motion.py).
-      self.touches[r].forEach(function (c) {
+    });
+    // A touch shows while it happens and for a moment after, as in the films (plots/motion.py).
+    var listed = 0;
+    this.touches.forEach(function (touches) {
+      touches.forEach(function (c) {
         var on = c.t <= self.t + 1e-12 && self.t <= c.t + s.touch_window;
         c.node.setAttribute("visibility", on ? "visible" : "hidden");
+        c.text.setAttribute("visibility", on ? "visible" : "hidden");
+        if (on) c.text.setAttribute("y", 56 + 24 * listed++);
       });
     });
     this.cursors.forEach(function (c) { c.node.setAttribute("x1", c.x(self.t)); c.node.setAttribute("x2", c.x(self.t)); });
