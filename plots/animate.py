@@ -100,7 +100,7 @@ def render(scene, runs, out_stem, frames_dir):
               "set style textbox opaque noborder margins 1, 0.5",
               f"set xrange [{box[0]!r}:{box[1]!r}]", f"set yrange [{box[2]!r}:{box[3]!r}]",
               f"set xlabel {motion.quote(view.xlabel)}", f"set ylabel {motion.quote(view.ylabel)}",
-              f"set title {motion.quote(wrapped(scene.title))} font title_font noenhanced",
+              f"set title {motion.quote(wrapped(strobe.strobe_title(scene)))} font title_font noenhanced",
               "set format x '%g'", "set format y '%g'", "set key outside bottom center horizontal"]
     for k, t in enumerate(times):
         script.append(f"set output {motion.quote(str(frames_dir / f'frame{k:05d}.png'))}")

@@ -10,7 +10,7 @@ It also checks what that check takes on trust: that <scene>.panels.json, from wh
 cursor is placed, says where the figure's axes really are. Every tic of every time axis in
 the SVG must stand where the panel's recorded plot area and range put its value.
 
-    player_test.py --sim build/dev/tools/workbook-sim --source .
+    player_test.py --sim build/dev/tools/workbook-sim --source . --chromium /usr/bin/chromium
 """
 
 import argparse
