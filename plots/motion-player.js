@@ -110,7 +110,9 @@
           if (run.student) line.setAttribute("stroke-dasharray", "6 4");
           return line;
         });
-        return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg), hands: hands};
+        // A dot at the centre, so that even a 5 mm bullet shows (as in the strobe pictures).
+        var dot = el("circle", {r: 3.5, fill: colour}, svg);
+        return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg), hands: hands, dot: dot};
       });
     });
     // Each touch: an arrow along its normal at the contact point, and a line of text listed
@@ -186,6 +188,9 @@
         } else {
           nodes.polygon.setAttribute("points", shape.p.map(function (q) { return self.sx(q[0]) + "," + self.sy(q[1]); }).join(" "));
         }
+        var centre = shape.c || (shape.a ? shape.a[0] : null);
+        nodes.dot.setAttribute("visibility", centre ? "visible" : "hidden");
+        if (centre) { nodes.dot.setAttribute("cx", self.sx(centre[0])); nodes.dot.setAttribute("cy", self.sy(centre[1])); }
         nodes.hands.forEach(function (line, n) {
           var a = shape.a ? shape.a[n] : null;
           line.setAttribute("visibility", a ? "visible" : "hidden");
