@@ -30,6 +30,7 @@ FPS = 25
 SIZE = (1280, 720)
 GIF_WIDTH = 640
 ASPECT = 2.25   # width / height of the data box in a 16:9 frame with title and key
+TEXT_SIZE = (0.014, 0.066)  # one character of label_font, as fractions of the data box (strobe.TEXT_SIZE)
 
 
 slow_motion_factor = motion.slow_motion_factor
@@ -59,13 +60,13 @@ def speed_text(factor):
 
 def frame_commands(scene, runs, view, box, t, factor, trails):
     """One frame: planes, each body's path so far, the bodies at time t, the touches so far."""
-    canvas = motion.Canvas(view)
+    canvas = motion.Canvas(view, box, TEXT_SIZE)
     motion.draw_planes(canvas, scene, runs[0][0], view, box)
     datablocks, plot = [], ["NaN notitle"]
     for n, (trajectory, contacts, student) in enumerate(runs):
         index = trajectory.index_at(t)
         for i in motion.movable(scene):
-            colour = motion.STUDENT_COLOUR if student else motion.BODY_COLOURS[i % len(motion.BODY_COLOURS)]
+            colour = motion.STUDENT_COLOUR if student else motion.body_colour(scene, i)
             path = trails[n][i][:index + 1]
             name = f"$trail{n}_{i}"
             datablocks.append(f"{name} << EOD\n" + "\n".join(f"{x!r},{y!r}" for x, y in path) + "\nEOD")
@@ -74,16 +75,15 @@ def frame_commands(scene, runs, view, box, t, factor, trails):
             position, q, _ = trajectory.states[index][i]
             shape = motion.outline(scene.bodies[i], position, q, view)
             canvas.shape(shape, colour, None if student else colour, width=3.5 if student else 2.5, dashed=student,
-                         opacity=0.25)
+                         opacity=0.25, hands=motion.box_hands(scene.bodies[i], position, q, view))
             canvas.point(view.project(position), colour, size=0.5)
-        shown = {step: rows for step, rows in contacts.items() if rows[0]["t"] <= t + 1e-12}
-        strobe.draw_contacts(canvas, scene, shown, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
-                             label_side=-1 if n else 1)
+        between = (t - motion.touch_window(scene.duration), t + 1e-12)
+        strobe.draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
+                             label_side=-1 if n else 1, between=between)
     canvas.label(f"t = {t:.4f} s", (0.01, 0.95), "#202020", coords="graph")
     canvas.label(f"{view.name} · {speed_text(factor)}", (0.99, 0.95), "#202020", align="right", coords="graph")
-    for i in motion.movable(scene):
-        plot.append(f"NaN with lines lc rgb '{motion.BODY_COLOURS[i % len(motion.BODY_COLOURS)]}' lw 4 "
-                    f"title {motion.quote(scene.names[i])}")
+    for name, colour in motion.key_entries(scene):
+        plot.append(f"NaN with lines lc rgb '{colour}' lw 4 title {motion.quote(name)}")
     if any(student for _, _, student in runs):
         plot.append(f"NaN with lines lc rgb '{motion.STUDENT_COLOUR}' lw 3 dt 2 title 'your code'")
     return datablocks + canvas.lines + ["plot " + ", ".join(plot), "unset object", "unset arrow", "unset label"]
@@ -100,7 +100,7 @@ def render(scene, runs, out_stem, frames_dir):
               "set style textbox opaque noborder margins 1, 0.5",
               f"set xrange [{box[0]!r}:{box[1]!r}]", f"set yrange [{box[2]!r}:{box[3]!r}]",
               f"set xlabel {motion.quote(view.xlabel)}", f"set ylabel {motion.quote(view.ylabel)}",
-              f"set title {motion.quote(wrapped(scene.title))} font title_font noenhanced",
+              f"set title {motion.quote(wrapped(strobe.strobe_title(scene)))} font title_font noenhanced",
               "set format x '%g'", "set format y '%g'", "set key outside bottom center horizontal"]
     for k, t in enumerate(times):
         script.append(f"set output {motion.quote(str(frames_dir / f'frame{k:05d}.png'))}")

@@ -64,10 +64,28 @@ def energy_commands(scene, runs):
     return g + ["plot " + ", ".join(plot)]
 
 
+def leaving(scene, trajectory, view, box):
+    """A note for each body whose last position lies outside the picture: where it went."""
+    notes = []
+    for i in motion.movable(scene):
+        x, y = view.project(trajectory.states[-1][i][0])
+        if not (box[0] <= x <= box[1] and box[2] <= y <= box[3]):
+            axis, value = (view.ylabel, y) if not box[2] <= y <= box[3] else (view.xlabel, x)
+            notes.append(f"{scene.names[i]} leaves the picture:\n{axis.split(' /')[0]} = {motion.number(value)} m "
+                         f"at t = {trajectory.times[-1]:.4g} s")
+    return notes
+
+
 def strip_commands(scene, runs):
     trajectories = [(t, c) for t, c, _ in runs.values()]
     view = motion.choose_view(scene, [t for t, _ in trajectories])
-    extent = strobe.data_extent(scene, trajectories, view)
+    # One box and scale for every panel, fitted to the runs that stay near the others: a run
+    # whose bodies go more than three times as far as the middle one (a ball falling through
+    # the ground with no responder) leaves the picture, with a note saying where it went.
+    spans = [max(e[1] - e[0], e[3] - e[2]) for e in (strobe.data_extent(scene, [run], view) for run in trajectories)]
+    middle = sorted(spans)[len(spans) // 2]
+    kept = [run for run, span in zip(trajectories, spans) if span <= 3 * middle]
+    extent = strobe.data_extent(scene, kept, view)
     n = len(runs)
     # Wide scenes stack their panels; tall ones stand them side by side. Past three responders
     # the panels wrap into a grid (two columns of wide panels, three of tall ones), so that
@@ -79,13 +97,21 @@ def strip_commands(scene, runs):
         columns = 3 if across else 2
         rows = -(-n // columns)
     aspect = (4.0 / columns) / (3.0 * 0.85 / rows)
-    box = strobe.picture_box(scene, trajectories, view, aspect=aspect)
-    title = f"{scene.title} under each responder\n{strobe.strobe_note(scene, view)}"
+    pitch, count = strobe.strobe_layout(scene, kept, view, aspect)
+    box = strobe.picture_box(scene, kept, view, aspect=aspect, count=count, pitch=pitch)
+    title = f"{scene.title} under each responder\n{strobe.strobe_note(scene, view, count, pitch is not None)}"
     g = [f"set multiplot layout {rows},{columns} "
          f"title {motion.quote(title)} font title_font noenhanced", "set key off"]
+    # One character of label_font in a panel: the strobe picture's, as many times larger as the
+    # panel is narrower and shorter than that picture.
+    text_size = (strobe.TEXT_SIZE[0] * columns * 0.9, strobe.TEXT_SIZE[1] * rows * 0.9)
     for name, (trajectory, contacts, _) in runs.items():
-        g += strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, f"responder: {name}", key=False,
-                                    note=False)
+        panel = strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, name, key=False, note=False,
+                                       snapshots=count, pitch=pitch, text_size=text_size)
+        notes = [f"set label {1000 + k} {motion.quote(text)} at graph 0.62, graph {0.85 - 0.15 * k!r} center front "
+                 f"font note_font tc rgb '{motion.CONTACT_COLOUR}' noenhanced boxed"
+                 for k, text in enumerate(leaving(scene, trajectory, view, box))]
+        g += panel[:-4] + notes + panel[-4:]
     return g + ["unset multiplot"]
 
 

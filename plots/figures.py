@@ -47,6 +47,14 @@ DEPTH = ("penetration_max", "deepest penetration", 41)
 
 FORMATS = ["svg", "pdf", "png"]
 
+# After each panel's plot, gnuplot prints where the panel's plot area lies on the canvas and
+# the range of its horizontal axis. From the SVG's lines figures.py writes <stem>.panels.json,
+# which the site's motion player reads to move a cursor across the chapter's own figure in
+# step with the scene (plots/motion-player.js).
+RECORD_PANEL = ('print sprintf("%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", GPVAL_TERM_XMIN, '
+                'GPVAL_TERM_XMAX, GPVAL_TERM_YMIN, GPVAL_TERM_YMAX, GPVAL_X_MIN, GPVAL_X_MAX, GPVAL_TERM_XSIZE, '
+                'GPVAL_TERM_YSIZE, GPVAL_TERM_SCALE)')
+
 
 def read_csv(path):
     """The CSV as {column: [float, ...]}."""
@@ -232,7 +240,7 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
     plot = curves(datasets, energy, e_factor)
     if reference and student:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g += ["plot " + ", \\\n     ".join(plot), "unset arrow 2", "unset label"]
+    g += ["plot " + ", \\\n     ".join(plot), RECORD_PANEL, "unset arrow 2", "unset label"]
     if hit is not None:
         g.append(impact_label)  # the energy labels are gone, the impact keeps its own
     g += [line for line in stop_marks if line.startswith("set label")]
@@ -249,7 +257,7 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
         plot += curves(datasets, [(c, t + " (right)", s) for c, t, s in angular], l_factor, "axes x1y2 ")
     if reference and student:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g += ["plot " + ", \\\n     ".join(plot)]
+    g += ["plot " + ", \\\n     ".join(plot), RECORD_PANEL]
 
     # Penetration panel: the deepest contact of each step as detected, before correction.
     if depth_panel:
@@ -259,7 +267,7 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
         plot = curves(datasets, [DEPTH[:3]], 1000.0)
         if reference and student:
             plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-        g += ["plot " + ", \\\n     ".join(plot)]
+        g += ["plot " + ", \\\n     ".join(plot), RECORD_PANEL]
     g.append("unset multiplot")
     return "\n".join(g)
 
@@ -283,7 +291,7 @@ def sweep_panel(title, runs, dt):
         plot.append(clause)
     if any(run[3] for run in runs):
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g.append("plot " + ", \\\n     ".join(plot))
+    g += ["plot " + ", \\\n     ".join(plot), RECORD_PANEL]
     return "\n".join(g)
 
 
@@ -305,6 +313,31 @@ def run_sweep(simulator, scene, fractions, out_dir, stem):
     return runs
 
 
+def render(body, out_dir, stem, what, x_per_second=1.0):
+    """Draws `body` as stem.svg, .pdf and .png, and writes stem.panels.json: where each
+    panel's plot area lies in the SVG (pixels from its top left corner) and the range of its
+    horizontal axis, which is x_per_second times the time."""
+    with tempfile.TemporaryDirectory() as scratch:
+        script = []
+        for ext in FORMATS:
+            script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
+                       f"set output {quote(str(out_dir / (stem + '.' + ext)))}",
+                       f"set print {quote(str(Path(scratch, ext + '.panels')))}", body, "unset output", "unset print"]
+        result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+        if result.returncode != 0 or result.stderr.strip():
+            raise RuntimeError(f"gnuplot on {what}:\n{result.stderr.strip()}")
+        panels, width, height = [], None, None
+        for line in Path(scratch, "svg.panels").read_text().split("\n"):
+            if not line.strip():
+                continue
+            left, right, low, high, x0, x1, xsize, ysize, scale = (float(v) for v in line.split())
+            width, height = xsize / scale, ysize / scale
+            panels.append({"left": left, "right": right, "top": height - high, "bottom": height - low, "x0": x0, "x1": x1})
+    (out_dir / (stem + ".panels.json")).write_text(json.dumps(
+        {"figure": stem + ".svg", "width": width, "height": height, "x_per_second": x_per_second, "panels": panels},
+        indent=1) + "\n")
+
+
 def draw_sweep(scene, out_dir, stem, reference_sim, student_sim):
     """A scene with a "sweep": one figure of depth against step, one curve per fraction, and
     one CSV beside it (the step and every run's deepest penetration, m)."""
@@ -318,14 +351,9 @@ def draw_sweep(scene, out_dir, stem, reference_sim, student_sim):
                  for f, p, d in run_sweep(student_sim, scene, fractions, out_dir, stem + ".yours")]
     title = description["title"] + ("" if reference_sim else " (your code)")
     body = sweep_panel(title, runs, dt)
-    script = []
-    for ext in FORMATS:
-        script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
-                   f"set output {quote(str(out_dir / (stem + '.' + ext)))}", body, "unset output"]
-    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
     try:
-        if result.returncode != 0 or result.stderr.strip():
-            raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+        # The horizontal axis counts steps: a time t lies at step t / dt.
+        render(body, out_dir, stem, scene.name, x_per_second=1.0 / dt)
         with open(out_dir / (stem + ".csv"), "w", newline="") as f:
             writer = csv.writer(f)
             writer.writerow(["step"] + [f"penetration_max_beta_{fr:g}" + ("_yours" if dashed or not reference_sim else "")
@@ -360,13 +388,7 @@ def draw(scene, out_dir, stem, reference, student, scratch):
     datasets = ([(reference[0], reference[1], False, True)] if reference else []) + \
                ([(student[0], student[1], bool(reference), not reference)] if student else [])
     body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops)
-    script = []
-    for ext in FORMATS:
-        script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
-                   f"set output {quote(str(out_dir / (stem + '.' + ext)))}", body, "unset output"]
-    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
-    if result.returncode != 0 or result.stderr.strip():
-        raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+    render(body, out_dir, stem, scene.name)
     return notes
 
 

@@ -1,9 +1,10 @@
 // The site's motion player (issue 14): every <div class="wb-motion" data-chapter="ID"> becomes
 // a player of that chapter's scenes: the bodies moving in the same view as the strobe
-// pictures and animations, play / pause, a scrub bar, a speed choice, and the scene's energy
-// and momentum over time with a cursor that moves in step. Plain JavaScript and SVG; the
-// scenes' data come from <scene>.player.js files loaded by <script> (plots/player_data.py),
-// so nothing is fetched and the page works offline from a folder.
+// pictures and animations, play / pause, a scrub bar, a speed choice, and below them the
+// chapter's own energy and momentum figure of the scene with a cursor that moves in step.
+// Plain JavaScript and SVG; the scenes' data come from <scene>.player.js files and the
+// figures' panel positions from <scene>.panels.json, bundled into <script> files by
+// plots/site_motion.py, so nothing is fetched and the page works offline from a folder.
 (function () {
   "use strict";
   var NS = "http://www.w3.org/2000/svg";
@@ -42,7 +43,8 @@
     ".wb-motion svg{display:block;width:100%;height:auto;background:#fff}" +
     ".wb-motion .wb-bar{display:flex;flex-wrap:wrap;align-items:center;gap:10px;margin:6px 0}" +
     ".wb-motion .wb-bar input[type=range]{flex:1;min-width:200px}" +
-    ".wb-motion .wb-charts{display:flex;gap:10px}.wb-motion .wb-charts>div{flex:1}" +
+    ".wb-motion .wb-figure{position:relative;margin-top:6px}.wb-motion .wb-figure img{display:block;width:100%;height:auto}" +
+    ".wb-motion .wb-figure svg{position:absolute;left:0;top:0;width:100%;height:100%;background:none;pointer-events:none}" +
     ".wb-motion button{min-width:5.5em}.wb-motion .wb-time{font-variant-numeric:tabular-nums;min-width:8em}";
 
   function Player(root, scenes) {
@@ -89,7 +91,7 @@
     }
     for (var y = Math.ceil(b[2] / step) * step; y <= b[3]; y += step) {
       el("line", {x1: 0, x2: W, y1: sy(y), y2: sy(y)}, g);
-      el("text", {x: 4, y: sy(y) - 3, "font-size": 14, fill: "#404040"}, svg, label(y));
+      if (sy(y) > 48) el("text", {x: 4, y: sy(y) - 3, "font-size": 14, fill: "#404040"}, svg, label(y));  // the clock's corner
     }
     el("text", {x: W / 2, y: H + 36, "text-anchor": "middle", "font-size": 15}, svg, s.view.x + "   (" + s.view.name + "; vertical: " + s.view.y + ")");
     s.planes.forEach(function (p) {
@@ -102,63 +104,69 @@
         var attrs = {stroke: colour, "stroke-width": run.student ? 3.5 : 2.5, fill: run.student ? "none" : colour,
                      "fill-opacity": 0.25};
         if (run.student) attrs["stroke-dasharray"] = "10 6";
-        return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg)};
+        // A box's own axes, centre to face middles (plots/motion.py, box_hands).
+        var hands = [0, 1, 2].map(function () {
+          var line = el("line", {stroke: colour, "stroke-width": run.student ? 2.5 : 2}, svg);
+          if (run.student) line.setAttribute("stroke-dasharray", "6 4");
+          return line;
+        });
+        // A dot at the centre, so that even a 5 mm bullet shows (as in the strobe pictures).
+        var dot = el("circle", {r: 3.5, fill: colour}, svg);
+        return {circle: el("circle", attrs, svg), polygon: el("polygon", attrs, svg), hands: hands, dot: dot};
       });
     });
+    // Each touch: an arrow along its normal at the contact point, and a line of text listed
+    // under the clock while it shows (several touches at once would cover one another).
     this.touches = s.runs.map(function (run) {
-      return run.touches.map(function (c, n) {
+      return run.touches.map(function (c) {
         var colour = run.student ? "#CC79A7" : "#B2182B", group = el("g", {visibility: "hidden"}, svg);
         var x1 = sx(c.from[0]), y1 = sy(c.from[1]), x2 = sx(c.to[0]), y2 = sy(c.to[1]);
         var a = Math.atan2(y2 - y1, x2 - x1), h = 14;
         el("line", {x1: x1, y1: y1, x2: x2, y2: y2, stroke: colour, "stroke-width": 4}, group);
         el("polygon", {points: [x2 + h * Math.cos(a), y2 + h * Math.sin(a), x2 + h * Math.cos(a + 2.4), y2 + h * Math.sin(a + 2.4),
                                 x2 + h * Math.cos(a - 2.4), y2 + h * Math.sin(a - 2.4)].join(" "), fill: colour}, group);
-        el("text", {x: x2 + (Math.cos(a) >= -0.3 ? 12 : -12), y: y2 - 10 + 24 * n, "text-anchor": Math.cos(a) >= -0.3 ? "start" : "end",
-                    "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, group,
-           c.text + " at t = " + label(c.t) + " s");
-        return {t: c.t, node: group};
+        var text = el("text", {x: 12, y: 0, "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff",
+                               "stroke-width": 5, visibility: "hidden", "class": "wb-touch"}, svg,
+                      (run.student ? "your code: " : "") + c.text + " at t = " + label(c.t) + " s");
+        return {t: c.t, node: group, text: text};
       });
     });
     this.clock = el("text", {x: 12, y: 28, "font-size": 22, "paint-order": "stroke", stroke: "#fff", "stroke-width": 5}, svg);
-    this.charts.innerHTML = "";
-    this.cursors = [this.chart("Energy", "E / J", s.series.energy), this.chart("Momentum", "p / (kg m/s)", s.series.momentum)];
+    // The key: each body's name in its colour (a crowd shares colours: plots/motion.py, key_entries).
+    var key = el("text", {x: W - 12, y: 28, "text-anchor": "end", "font-size": 18, "paint-order": "stroke", stroke: "#fff",
+                          "stroke-width": 5, "class": "wb-key"}, svg);
+    var entries = s.key.slice();
+    if (s.runs.some(function (run) { return run.student; })) entries.push(["your code (dashed)", "#CC79A7"]);
+    entries.forEach(function (e, n) { el("tspan", {fill: e[1], dx: n ? 14 : 0}, key, "\u25A0 " + e[0]); });
+    this.cursors = this.figure();
     this.showSpeed();
     this.show(0);
   };
 
-  Player.prototype.chart = function (title, unit, curves) {
-    var s = this.scene, W = 470, H = 270, L = 70, R = 12, T = 48, B = 46;
-    var box = html("div", {}, this.charts);
-    var svg = el("svg", {viewBox: "0 0 " + W + " " + H, "class": "wb-chart", role: "img", "aria-label": title + " over time"}, box);
-    var lo = 0, hi = 0;
-    curves.forEach(function (c) { c.v.forEach(function (v) { if (isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); } }); });
-    var span = (hi - lo) || 1; hi += 0.08 * span; if (lo < 0) lo -= 0.08 * span;
-    var t0 = 0, t1 = s.duration;
-    var px = function (t) { return L + (t - t0) / (t1 - t0) * (W - L - R); };
-    var py = function (v) { return H - B - (v - lo) / (hi - lo) * (H - T - B); };
-    el("text", {x: (L + W - R) / 2, y: 20, "text-anchor": "middle", "font-size": 16}, svg, title);
-    var ts = niceStep(t1 - t0, 5), vs = niceStep(hi - lo, 5);
-    for (var t = 0; t <= t1 + 1e-12; t += ts) {
-      el("line", {x1: px(t), x2: px(t), y1: T, y2: H - B, stroke: "#E4E4E4"}, svg);
-      el("text", {x: px(t), y: H - B + 18, "text-anchor": "middle", "font-size": 13}, svg, label(t));
+  // The scene's energy and momentum: the chapter's own figure (the SVG the page shows), with
+  // a cursor on each of its panels. Where each panel's plot area lies and the range of its
+  // time axis come from the figure's .panels.json, written by plots/figures.py from gnuplot's
+  // own numbers, so the cursor stands exactly at the time shown.
+  Player.prototype.figure = function () {
+    var s = this.scene, figure = (window.WorkbookMotionFigures || {})[s.chapter + "/" + s.scene];
+    this.charts.innerHTML = "";
+    if (!figure) {
+      html("p", {"class": "wb-no-figure"}, this.charts, "(No energy and momentum figure for this scene: run ./workbook figures.)");
+      return [];
     }
-    for (var v = Math.ceil(lo / vs) * vs; v <= hi; v += vs) {
-      el("line", {x1: L, x2: W - R, y1: py(v), y2: py(v), stroke: "#E4E4E4"}, svg);
-      el("text", {x: L - 6, y: py(v) + 4, "text-anchor": "end", "font-size": 13}, svg, label(v));
-    }
-    el("text", {x: (L + W - R) / 2, y: H - 8, "text-anchor": "middle", "font-size": 14}, svg, "t / s");
-    el("text", {x: 16, y: (T + H - B) / 2, "text-anchor": "middle", "font-size": 14, transform: "rotate(-90 16 " + (T + H - B) / 2 + ")"}, svg, unit);
-    el("polyline", {points: L + "," + T + " " + L + "," + (H - B) + " " + (W - R) + "," + (H - B), fill: "none", stroke: "#404040"}, svg);
-    curves.forEach(function (c, n) {
-      var pts = c.v.map(function (v, i) { return px(s.series.t[i]).toFixed(2) + "," + py(v).toFixed(2); }).join(" ");
-      el("polyline", {points: pts, fill: "none", stroke: c.colour, "stroke-width": c.name === "total" ? 6 : 2.5,
-                      "stroke-opacity": c.name === "total" ? 0.6 : 1}, svg);
-      // The key sits between the title and the plot, clear of the curves.
-      el("line", {x1: L + 10 + 110 * n, x2: L + 34 + 110 * n, y1: T - 14, y2: T - 14, stroke: c.colour, "stroke-width": 4}, svg);
-      el("text", {x: L + 40 + 110 * n, y: T - 9, "font-size": 13}, svg, c.name);
+    var box = html("div", {"class": "wb-figure"}, this.charts);
+    html("img", {src: figure.src, alt: "Energy and momentum over time: " + s.title}, box);
+    var svg = el("svg", {viewBox: "0 0 " + figure.width + " " + figure.height, preserveAspectRatio: "none",
+                         "aria-hidden": "true"}, box);
+    return figure.panels.map(function (p) {
+      var x = function (t) {
+        var u = (t * figure.x_per_second - p.x0) / (p.x1 - p.x0);
+        return p.left + Math.max(0, Math.min(1, u)) * (p.right - p.left);
+      };
+      var node = el("line", {"class": "wb-cursor", x1: x(0), x2: x(0), y1: p.top, y2: p.bottom, stroke: "#B2182B",
+                             "stroke-width": 2.5, "stroke-opacity": 0.85}, svg);
+      return {node: node, x: x};
     });
-    var cursor = el("line", {"class": "wb-cursor", x1: px(0), x2: px(0), y1: T, y2: H - B, stroke: "#B2182B", "stroke-width": 2.5}, svg);
-    return {node: cursor, x: px};
   };
 
   Player.prototype.showSpeed = function () {
@@ -180,8 +188,28 @@
         } else {
           nodes.polygon.setAttribute("points", shape.p.map(function (q) { return self.sx(q[0]) + "," + self.sy(q[1]); }).join(" "));
         }
+        var centre = shape.c || (shape.a ? shape.a[0] : null);
+        nodes.dot.setAttribute("visibility", centre ? "visible" : "hidden");
+        if (centre) { nodes.dot.setAttribute("cx", self.sx(centre[0])); nodes.dot.setAttribute("cy", self.sy(centre[1])); }
+        nodes.hands.forEach(function (line, n) {
+          var a = shape.a ? shape.a[n] : null;
+          line.setAttribute("visibility", a ? "visible" : "hidden");
+          if (a) {
+            line.setAttribute("x1", self.sx(a[0])); line.setAttribute("y1", self.sy(a[1]));
+            line.setAttribute("x2", self.sx(a[2])); line.setAttribute("y2", self.sy(a[3]));
+          }
+        });
       });
-      self.touches[r].forEach(function (c) { c.node.setAttribute("visibility", c.t <= self.t + 1e-12 ? "visible" : "hidden"); });
+    });
+    // A touch shows while it happens and for a moment after, as in the films (plots/motion.py).
+    var listed = 0;
+    this.touches.forEach(function (touches) {
+      touches.forEach(function (c) {
+        var on = c.t <= self.t + 1e-12 && self.t <= c.t + s.touch_window;
+        c.node.setAttribute("visibility", on ? "visible" : "hidden");
+        c.text.setAttribute("visibility", on ? "visible" : "hidden");
+        if (on) c.text.setAttribute("y", 56 + 24 * listed++);
+      });
     });
     this.cursors.forEach(function (c) { c.node.setAttribute("x1", c.x(self.t)); c.node.setAttribute("x2", c.x(self.t)); });
     this.clock.textContent = "t = " + this.t.toFixed(4) + " s";
@@ -200,9 +228,11 @@
     this.root.setAttribute("data-playing", "false");
   };
   Player.prototype.toggle = function () { if (this.playing) this.pause(); else this.play(); };
-  Player.prototype.tick = function () {
+  // `now` (ms) defaults to the clock; the site's test passes its own to check the speed exactly.
+  Player.prototype.tick = function (now) {
     if (!this.playing) return;
-    var now = Date.now(), dt = (now - this.last) / 1000; this.last = now;
+    if (now === undefined) now = Date.now();
+    var dt = (now - this.last) / 1000; this.last = now;
     this.show(this.t + dt * this.speed / this.scene.slow_motion);
     if (this.t >= this.scene.duration) this.pause();
   };

@@ -71,6 +71,16 @@ def slow_motion_factor(duration):
     return next((f for f in SLOW_MOTION if duration * f >= SHORTEST_FILM - 1e-9), SLOW_MOTION[-1])
 
 
+# A touch is marked in a film (and the site's player) while it happens and for this long of
+# the film after, so that the picture does not fill with the arrows of touches long past.
+TOUCH_FILM_SECONDS = 1.5
+
+
+def touch_window(duration):
+    """How long, in simulated seconds, a film shows a touch after it began."""
+    return TOUCH_FILM_SECONDS / slow_motion_factor(duration)
+
+
 def stride_for(scene_spec, frames=1500):
     """A stride keeping about `frames` recorded frames (every step for short runs)."""
     steps = round(scene_spec["duration"] / scene_spec["time_step"])
@@ -93,18 +103,21 @@ class Scene:
 
 
 class Trajectory:
-    """The frames of a trajectory file: times, and per frame per body (position, quaternion)."""
+    """The frames of a trajectory file: times, per frame per body (position, quaternion,
+    velocity) in `states`, and per frame per body the angular velocity in `spins`."""
 
     def __init__(self, path):
         frames = {}
         with open(path, newline="") as f:
             for row in csv.DictReader(f):
-                frame = frames.setdefault(int(row["frame"]), (float(row["t"]), []))
+                frame = frames.setdefault(int(row["frame"]), (float(row["t"]), [], []))
                 frame[1].append(([float(row[c]) for c in "xyz"], [float(row[c]) for c in ("qw", "qx", "qy", "qz")],
                                  [float(row[c]) for c in ("vx", "vy", "vz")]))
+                frame[2].append([float(row[c]) for c in ("wx", "wy", "wz")])
         self.steps = sorted(frames)
         self.times = [frames[s][0] for s in self.steps]
         self.states = [frames[s][1] for s in self.steps]
+        self.spins = [frames[s][2] for s in self.steps]
         for t, states in zip(self.times, self.states):
             for position, q, v in states:
                 if not all(math.isfinite(x) for x in position + q + v):
@@ -176,26 +189,55 @@ class View:
         return ("−" if self.sign_v < 0 else "") + self.label(self.v)
 
 
+class Shifted:
+    """A view whose pictures are moved across by `dx`: where a strobe picture sets its
+    outlines side by side in time order (strobe.py, spread_pitch)."""
+
+    def __init__(self, view, dx):
+        self.view, self.dx = view, dx
+        self.h, self.v, self.name, self.sign_v = view.h, view.v, view.name, view.sign_v
+        self.xlabel, self.ylabel = view.xlabel, view.ylabel
+
+    def project(self, p):
+        x, y = self.view.project(p)
+        return (x + self.dx, y)
+
+
 def choose_view(scene, trajectories):
-    """The rule (docs/scene-format.md, "Motion pictures"): with gravity, a side view with up
-    against gravity and across the axis along which the bodies move furthest; without gravity,
-    a top view of the two axes along which the bodies move furthest (x before y before z on ties),
-    so a scene in the plane z = 0 is seen as the x-y plane."""
-    extent = [0.0, 0.0, 0.0]
+    """The rule (plots/README.md, "Motion pictures"): with gravity, a side view with up
+    against gravity and across the axis along which the bodies move furthest; where they move
+    equally far (within a hundredth of the largest body), across the axis they turn about
+    least, so that a box tipping over is seen turning. Without gravity, the two axes along
+    which the bodies move furthest (x before y before z on ties), so a scene in the plane
+    z = 0 is seen as the x-y plane; it is a side view when a plane (the ground) faces along
+    the picture's vertical axis, drawn below the bodies, and a top view otherwise."""
+    extent, turn = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]
+    moving = [i for i in movable(scene) if not scene.bodies[i].get("immovable")]
     for trajectory in trajectories:
         for axis in range(3):
-            values = [s[0][axis] for states in trajectory.states for s, body in zip(states, scene.bodies)
-                      if not body.get("immovable")]
+            values = [states[i][0][axis] for states in trajectory.states for i in moving]
             if values:
                 extent[axis] = max(extent[axis], max(values) - min(values))
+            turn[axis] += sum(abs(spins[i][axis]) for spins in trajectory.spins for i in moving)
+    tie = 0.01 * max([body_size(scene.bodies[i]) for i in moving], default=0.0)
     if any(scene.gravity):
         up = max(range(3), key=lambda a: abs(scene.gravity[a]))
-        across = max((a for a in range(3) if a != up), key=lambda a: (round(extent[a], 12), -a))
+        others = [a for a in range(3) if a != up]
+        furthest = max(extent[a] for a in others)
+        across = min((a for a in others if extent[a] >= furthest - tie), key=lambda a: (turn[a], a))
         view = View(across, up, "side view")
         view.sign_v = -1.0 if scene.gravity[up] > 0 else 1.0
         return view
     first, second = sorted(sorted(range(3), key=lambda a: (-round(extent[a], 12), a))[:2])
-    return View(first, second, "top view")
+    view = View(first, second, "top view")
+    for body in scene.bodies:
+        if body["shape"]["type"] == "plane":
+            normal = [float(n) for n in body["shape"]["normal"]]
+            if abs(normal[second]) > 0.99 * math.sqrt(sum(n * n for n in normal)):
+                view.name = "side view"
+                view.sign_v = 1.0 if normal[second] > 0 else -1.0
+                break
+    return view
 
 
 # ---- Geometry ---------------------------------------------------------------------------------
@@ -243,6 +285,40 @@ def outline(body, position, q, view):
                     corners.append(view.project([position[i] + local[i] for i in range(3)]))
         return ("polygon", convex_hull(corners))
     return None
+
+
+def box_hands(body, position, q, view):
+    """For a box, three segments from its centre to the middles of its +x, +y and +z faces,
+    in the view: the box's own axes, so that its turning shows even where its outline looks
+    the same (a cube turned a quarter, a box flipped end over end). None for other shapes."""
+    shape = body["shape"]
+    if shape["type"] != "box":
+        return None
+    h = [float(e) for e in shape["half_extents"]]
+    centre = view.project(position)
+    hands = []
+    for axis in range(3):
+        local = rotate(q, [h[axis] if k == axis else 0.0 for k in range(3)])
+        hands.append((centre, view.project([position[k] + local[k] for k in range(3)])))
+    return hands
+
+
+def body_colour(scene, i):
+    """Each movable body its own colour; with more bodies than colours (a billiard rack) the
+    first keeps the first colour and all the others share the second, as the key says."""
+    bodies = movable(scene)
+    if len(bodies) > len(BODY_COLOURS):
+        return BODY_COLOURS[0] if i == bodies[0] else BODY_COLOURS[1]
+    return BODY_COLOURS[bodies.index(i) if i in bodies else i % len(BODY_COLOURS)]
+
+
+def key_entries(scene):
+    """(title, colour) of the key: one per body, or two for a crowd (see body_colour)."""
+    bodies = movable(scene)
+    if len(bodies) > len(BODY_COLOURS):
+        return [(scene.names[bodies[0]], BODY_COLOURS[0]),
+                (f"{scene.names[bodies[1]]} … {scene.names[bodies[-1]]}", BODY_COLOURS[1])]
+    return [(scene.names[i], body_colour(scene, i)) for i in bodies]
 
 
 def body_size(body):
@@ -359,14 +435,44 @@ def impulse_text(j):
 
 
 class Canvas:
-    """Collects gnuplot object, arrow and label commands with their own numbering, for one view."""
+    """Collects gnuplot object, arrow and label commands with their own numbering, for one view.
 
-    def __init__(self, view=None):
+    `text_size` is the size of one character of label_font as fractions of the plot's width
+    and height (it depends on the terminal and the layout), so that labels placed with
+    `free_label` can be kept from covering one another."""
+
+    def __init__(self, view=None, box=None, text_size=(0.0082, 0.05)):
         self.view = view
+        self.box = box
+        self.text_size = text_size
+        self.taken = []
         self.lines = []
         self.objects = 0
         self.arrows = 0
         self.labels = 0
+
+    def free_label(self, text, at, colour, align="center", side=1, font="label_font"):
+        """A label_font label beside the point `at` (above it for side 1, below for -1), moved
+        a line further out for as long as it would cover a label placed before it."""
+        box = self.box
+        width = len(text) * self.text_size[0] * (box[1] - box[0])
+        line = self.text_size[1] * (box[3] - box[2])
+        x0 = at[0] - {"left": 0.0, "center": 0.5, "right": 1.0}[align] * width
+        # Inside the picture: a label that would run over its left or right edge starts (ends) there.
+        if x0 < box[0] or x0 + width > box[1]:
+            x0 = box[0] + 0.01 * (box[1] - box[0]) if x0 < box[0] else box[1] - 0.01 * (box[1] - box[0]) - width
+            at, align = (x0, at[1]), "left"
+        # Lines out from the point while they stay inside the picture, then the other way.
+        slots = [side * (1.0 + 1.3 * n) for n in range(40)]
+        # The picture's top line is its note's (strobe.py).
+        slots = [s for s in slots if box[2] + line < at[1] + s * line < box[3] - 2.0 * line] + [-s for s in slots]
+        for offset in slots:
+            y = at[1] + offset * line
+            if not any(x0 < b[1] and b[0] < x0 + width and abs(y - b[2]) < 1.1 * line for b in self.taken):
+                break
+        self.taken.append((x0, x0 + width, y))
+        # On a white ground, so that outlines behind the text do not cross it.
+        self.label(text, at, colour, align=align, font=font, offset=(0, offset), boxed=True)
 
     def circle(self, centre, radius, colour, fill, width=2.0, dashed=False, opacity=0.15):
         self.objects += 1
@@ -383,11 +489,14 @@ class Canvas:
         self.lines.append(f"set object {self.objects} polygon from {path} {layer} fc rgb '{fill or colour}' {fs} "
                           f"lw {width}{' dt 2' if dashed else ''}")
 
-    def shape(self, shape, colour, fill, width=2.0, dashed=False, opacity=0.15):
+    def shape(self, shape, colour, fill, width=2.0, dashed=False, opacity=0.15, hands=None):
         if shape[0] == "circle":
             self.circle(shape[1], shape[2], colour, fill, width, dashed, opacity)
         else:
             self.polygon(shape[1], colour, fill, width, dashed, opacity)
+        for start, end in hands or []:
+            if math.dist(start, end) > 0:
+                self.arrow(start, end, colour, width=0.75 * width, head=False)
 
     def arrow(self, start, end, colour, width=3.0, head=True):
         self.arrows += 1
@@ -404,6 +513,8 @@ class Canvas:
                           f"tc rgb '{colour}' noenhanced{' boxed' if boxed else ''}")
 
     def point(self, at, colour, size=0.6):
+        if self.box and not (self.box[0] <= at[0] <= self.box[1] and self.box[2] <= at[1] <= self.box[3]):
+            return  # gnuplot would draw it outside the plot (it clips objects, not points)
         self.labels += 1
         self.lines.append(f"set label {self.labels} '' at {at[0]!r},{at[1]!r} point pt 7 ps {size} lc rgb '{colour}' front")
 

@@ -1,4 +1,4 @@
-"""The site's motion player data: one scene's motion, energy and momentum as a JavaScript file.
+"""The site's motion player data: one scene's motion as a JavaScript file.
 
 plots/strobe.py writes <scene>[.student].player.js beside the figures; the docs target copies
 them, with plots/motion-player.js, into the site (plots/site_motion.py). A <script> file and
@@ -12,8 +12,10 @@ import math
 
 import motion
 
-MOST_FRAMES = 400   # the player interpolates nothing: it shows the nearest stored frame
-MOST_SAMPLES = 600  # points per energy or momentum curve
+# The player interpolates nothing: it shows the nearest stored frame. It stores as many as the
+# film has (25 per second of film), within these bounds, so a turning box turns as smoothly.
+FILM_FPS = 25
+FEWEST_FRAMES, MOST_FRAMES = 100, 1000
 
 
 def evenly(count, most):
@@ -23,39 +25,22 @@ def evenly(count, most):
     return sorted({round(k * (count - 1) / (most - 1)) for k in range(most)})
 
 
-def shape_data(shape):
+def shape_data(shape, hands=None):
+    """A circle {"c": [x, y, r]} or a polygon {"p": [[x, y], ...]}, with a box's own axes
+    {"a": [[x0, y0, x1, y1], ...]} (motion.box_hands)."""
     if shape[0] == "circle":
-        return {"c": [round(shape[1][0], 6), round(shape[1][1], 6), round(shape[2], 6)]}
-    return {"p": [[round(x, 6), round(y, 6)] for x, y in shape[1]]}
+        data = {"c": [round(shape[1][0], 6), round(shape[1][1], 6), round(shape[2], 6)]}
+    else:
+        data = {"p": [[round(x, 6), round(y, 6)] for x, y in shape[1]]}
+    if hands:
+        data["a"] = [[round(v, 6) for v in start + end] for start, end in hands]
+    return data
 
 
-def series_data(series):
-    """Energy and momentum curves from the time series ({column: [values]}), thinned evenly.
-    Each step is kept as a step: the thinning keeps the samples on both sides of a response."""
-    t = series["t"]
-    keep = set(evenly(len(t), MOST_SAMPLES))
-    for i, change in enumerate(series["response_energy_change"]):
-        if change != 0.0 and len(keep) < 2 * MOST_SAMPLES:
-            keep |= {max(i - 1, 0), i}
-    index = sorted(keep)
-    pick = lambda column: [series[column][i] for i in index]  # noqa: E731
-    energy = [("total", "total", "#9A9A9A"), ("kinetic", "kinetic", "#0072B2"), ("potential", "potential", "#009E73")]
-    kinetic = [a + b for a, b in zip(series["kinetic_linear"], series["kinetic_rotational"])]
-    columns = dict(series, kinetic=kinetic)
-    scale = max((abs(v) for v in columns["total"] + kinetic), default=0.0) or 1.0
-    e = [{"name": title, "colour": colour, "v": [columns[c][i] for i in index]} for c, title, colour in energy
-         if c != "potential" or max(abs(v) for v in columns[c]) > 1e-9 * scale]
-    p_columns = [("momentum_x", "p_x", "#0072B2"), ("momentum_y", "p_y", "#D55E00"), ("momentum_z", "p_z", "#009E73")]
-    p_scale = max((abs(v) for c, _, _ in p_columns for v in series[c]), default=0.0)
-    p = [{"name": title, "colour": colour, "v": pick(c)} for c, title, colour in p_columns
-         if max(abs(v) for v in series[c]) > 1e-9 * p_scale] or [{"name": "p_x", "colour": "#0072B2", "v": pick("momentum_x")}]
-    return {"t": [t[i] for i in index], "energy": e, "momentum": p}
-
-
-def write(path, chapter, scene, runs, series, view, box, slow_motion):
-    """runs: [(Trajectory, contacts, is_student)]; series: the first run's time series."""
-    bodies = [{"name": scene.names[i], "colour": motion.BODY_COLOURS[i % len(motion.BODY_COLOURS)]}
-              for i in motion.movable(scene)]
+def write(path, chapter, scene, runs, view, box, slow_motion):
+    """runs: [(Trajectory, contacts, is_student)]. The scene's energy and momentum are not
+    here: the player shows the chapter's own figure (plots/site_motion.py)."""
+    bodies = [{"name": scene.names[i], "colour": motion.body_colour(scene, i)} for i in motion.movable(scene)]
     planes = []
     depth = 0.035 * max(box[1] - box[0], box[3] - box[2])
     for i, body in enumerate(scene.bodies):
@@ -73,8 +58,10 @@ def write(path, chapter, scene, runs, series, view, box, slow_motion):
             planes.append({"name": scene.names[i], "line": [list(a), list(b)], "band": [list(p) for p in band]})
     run_data = []
     for trajectory, contacts, student in runs:
-        frames = evenly(len(trajectory.times), MOST_FRAMES)
-        shapes = [[shape_data(motion.outline(scene.bodies[i], *trajectory.states[k][i][:2], view))
+        film = round(scene.duration * slow_motion * FILM_FPS) + 1
+        frames = evenly(len(trajectory.times), max(FEWEST_FRAMES, min(MOST_FRAMES, film)))
+        shapes = [[shape_data(motion.outline(scene.bodies[i], *trajectory.states[k][i][:2], view),
+                              motion.box_hands(scene.bodies[i], *trajectory.states[k][i][:2], view))
                    for i in motion.movable(scene)] for k in frames]
         touches = []
         for c in motion.contact_onsets(contacts):
@@ -88,7 +75,8 @@ def write(path, chapter, scene, runs, series, view, box, slow_motion):
         run_data.append({"student": student, "t": [trajectory.times[k] for k in frames], "shapes": shapes,
                          "touches": touches})
     data = {"chapter": chapter, "scene": scene.path.stem, "title": scene.title, "duration": scene.duration,
-            "slow_motion": slow_motion, "view": {"name": view.name, "x": view.xlabel, "y": view.ylabel},
-            "box": list(box), "bodies": bodies, "planes": planes, "runs": run_data, "series": series_data(series)}
+            "slow_motion": slow_motion, "touch_window": motion.TOUCH_FILM_SECONDS / slow_motion, "view": {"name": view.name, "x": view.xlabel, "y": view.ylabel},
+            "box": list(box), "bodies": bodies, "key": [list(e) for e in motion.key_entries(scene)], "planes": planes,
+            "runs": run_data}
     text = "(window.WorkbookMotion = window.WorkbookMotion || []).push(" + json.dumps(data, separators=(",", ":")) + ");\n"
     path.write_text(text)

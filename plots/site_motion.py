@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """Puts the motion player into the built site: html/motion/motion-player.js and, per chapter,
 html/motion/<chapter>.js with the data of every scene (the <scene>[.student].player.js files
-plots/strobe.py wrote beside the figures). A chapter page shows the player with the Doxygen
-alias \\motionplayer{<chapter>} (docs/Doxyfile.in).
+plots/strobe.py wrote beside the figures) and where the panels of each scene's energy and
+momentum figure lie (<scene>[.student].panels.json, from plots/figures.py), with that figure
+itself copied to html/motion/<chapter>/, so that the player shows the chapter's own figure
+with a cursor on it. A chapter page shows the player with the Doxygen alias
+\\motionplayer{<chapter>} (docs/Doxyfile.in).
 
     site_motion.py --figures build/dev/book/figures --html build/dev/book/site/html --suffix "" inelastic
 """
 
 import argparse
+import json
 import shutil
 from pathlib import Path
 
@@ -27,8 +31,21 @@ def main():
     for chapter in args.chapters:
         files = sorted(p for p in (args.figures / chapter).glob(f"*{args.suffix}.player.js")
                        if p.name.count(".") == args.suffix.count(".") + 2)
-        (out / f"{chapter}.js").write_text("".join(p.read_text() for p in files))
-        print(f"site: motion player data for {chapter}: {len(files)} scenes")
+        text, figures = "".join(p.read_text() for p in files), 0
+        for p in files:
+            scene = p.name[:-len(args.suffix + ".player.js")]
+            panels = args.figures / chapter / f"{scene}{args.suffix}.panels.json"
+            if not panels.is_file():
+                continue
+            figure = json.loads(panels.read_text())
+            (out / chapter).mkdir(exist_ok=True)
+            shutil.copyfile(panels.parent / figure["figure"], out / chapter / figure["figure"])
+            figure["src"] = f"motion/{chapter}/{figure.pop('figure')}"
+            text += ("(window.WorkbookMotionFigures = window.WorkbookMotionFigures || {})"
+                     f"[{json.dumps(chapter + '/' + scene)}] = {json.dumps(figure, separators=(',', ':'))};\n")
+            figures += 1
+        (out / f"{chapter}.js").write_text(text)
+        print(f"site: motion player data for {chapter}: {len(files)} scenes, {figures} with their figure")
 
 
 if __name__ == "__main__":

@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
 """Checks the strobe pictures (plots/strobe.py) against the trajectories they are drawn from.
 
-- The view rule: a scene with gravity is seen from the side with up against gravity; one
-  without is seen from the top, across the two axes the bodies move along.
+- The view rule: a scene with gravity is seen from the side with up against gravity, across
+  the axis they move along or, when they move along none, the one they turn about least;
+  one without gravity is seen across the two axes the bodies move along, from the side when
+  the ground faces up in it.
 - Nothing is cut off: every outline drawn lies inside the picture's box, and the box has the
-  aspect asked for (with `set size ratio -1`, one metre across equals one metre up).
+  aspect asked for (with `set size ratio -1`, one metre across equals one metre up); the
+  outlines are set side by side in time exactly where nothing moves across.
+- Boxes turn truthfully: the spinning cube's +x hand stands at 5 t radians before it hits.
+- Labels of touches at one place do not cover one another.
 - The marked contacts are the touches' first steps, with the impulse of the trajectory file:
   in the head-on carts, one touch at t = 0.2 s with J = mu |v1 - v2| = 2/3 kg * 3 m/s = 2 N s.
 - Every scene of every chapter gets an SVG, a PDF and a PNG of the stated size.
@@ -13,6 +18,7 @@
 """
 
 import argparse
+import math
 import struct
 import subprocess
 import sys
@@ -58,7 +64,6 @@ def main():
         check((upside.v, upside.sign_v) == (2, -1.0), f"gravity +z should give up = -z, got {vars(upside)}")
 
         # Boxes (chapter 4) are drawn by their orientation: the outline of the projected corners.
-        import math
         box_body = {"shape": {"type": "box", "half_extents": [1.0, 0.5, 0.25]}}
         top = motion.View(0, 1, "top view")
         for angle, half_x, half_y in ((0.0, 1.0, 0.5), (90.0, 0.5, 1.0), (45.0, 1.5 / math.sqrt(2), 1.5 / math.sqrt(2))):
@@ -70,18 +75,59 @@ def main():
             for got, want in ((x0, 2 - half_x), (x1, 2 + half_x), (y0, 3 - half_y), (y1, 3 + half_y)):
                 check(abs(got - want) < 1e-12, f"box at {angle} degrees spans {x0}..{x1}, {y0}..{y1}")
 
-        # Nothing cut off, aspect kept.
+        # Nothing cut off, aspect kept; outlines set side by side in time where nothing moves across.
+        for path in ("angular-impulse/long-box-drop", "angular-impulse/box-lands-flat-one-by-one",
+                     "angular-impulse/tennis-racket", "angular-impulse/spinning-box-hits-box", "linear-impulse/bouncing-ball"):
+            chapter, stem = path.split("/")
+            scene = motion.Scene(args.source / "chapters" / chapter / "scenes" / f"{stem}.json")
+            t, c = motion.simulate(args.sim, scene.path, scratch / f"{stem}.trajectory.csv", motion.stride_for(scene.spec))
+            loaded[stem] = (scene, motion.Trajectory(t), motion.read_contacts(c))
+        spread = {"clay-drop", "bouncing-ball", "box-lands-flat-one-by-one", "tennis-racket"}
         for name, (scene, trajectory, contacts) in loaded.items():
             view = motion.choose_view(scene, [trajectory])
-            box = strobe.picture_box(scene, [(trajectory, contacts)], view)
+            pitch, count = strobe.strobe_layout(scene, [(trajectory, contacts)], view)
+            check((pitch is not None) == (name in spread), f"{name}: outlines {'' if pitch else 'not '}set side by side")
+            box = strobe.picture_box(scene, [(trajectory, contacts)], view, count=count, pitch=pitch)
             aspect = (box[1] - box[0]) / (box[3] - box[2])
             check(abs(aspect - strobe.ASPECT) < 1e-9 * strobe.ASPECT, f"{name}: box aspect {aspect}")
-            for k in strobe.snapshot_indices(trajectory, scene.duration):
+            for t in strobe.snapshot_times(scene.duration, count):
+                k = trajectory.index_at(t)
+                where = strobe.view_at(view, pitch, scene.duration, t, count)
                 for i in motion.movable(scene):
                     position, q, _ = trajectory.states[k][i]
-                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, q, view)])
+                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, q, where)])
                     check(box[0] < x0 and x1 < box[1] and box[2] < y0 and y1 < box[3],
                           f"{name}: body {i} at frame {k} ({x0}..{x1}, {y0}..{y1}) leaves the box {box}")
+
+        # The view shows how boxes turn: a box tipping about x is seen across y, a long box
+        # dropped on the ground without gravity is seen from the side, ground down.
+        for name, want in (("box-lands-flat-one-by-one", (1, 2, "side view", 1.0)), ("long-box-drop", (0, 2, "side view", 1.0)),
+                           ("tennis-racket", (0, 1, "top view", 1.0)), ("clay-drop", (0, 1, "side view", 1.0))):
+            scene, trajectory, _ = loaded[name]
+            view = motion.choose_view(scene, [trajectory])
+            check((view.h, view.v, view.name, view.sign_v) == want, f"{name}: view {vars(view)}, expected {want}")
+
+        # A box's hands turn with it, the right way: the spinning cube (5 rad/s about +z, seen
+        # from above) has turned its +x hand 5 t radians anticlockwise before the impact.
+        scene, trajectory, _ = loaded["spinning-box-hits-box"]
+        view = motion.choose_view(scene, [trajectory])
+        for t in (0.02, 0.05, 0.08):
+            k = trajectory.index_at(t)
+            position, q, _ = trajectory.states[k][0]
+            (cx, cy), (hx, hy) = motion.box_hands(scene.bodies[0], position, q, view)[0]
+            turned = math.atan2(hy - cy, hx - cx)
+            check(abs(turned - 5.0 * trajectory.times[k]) < 1e-9 * 5.0 * trajectory.times[k] + 1e-12,
+                  f"spinning cube at t = {trajectory.times[k]} s: +x hand at {turned} rad, expected {5.0 * trajectory.times[k]}")
+            check(abs(math.hypot(hx - cx, hy - cy) - 0.2) < 1e-12, "the +x hand is not as long as the half extent")
+
+        # Labels of touches at one place are kept apart, inside the picture.
+        canvas = motion.Canvas(motion.View(0, 1, "top view"), (0.0, 10.0, 0.0, 4.0), strobe.TEXT_SIZE)
+        for n in range(4):
+            canvas.free_label(f"J = {n} N s at t = 0.2 s", (5.0, 1.0), "#000000")
+        ys = sorted(y for _, _, y in canvas.taken)
+        line = strobe.TEXT_SIZE[1] * 4.0
+        check(all(b - a >= 1.2 * line for a, b in zip(ys, ys[1:])), f"labels at one place overlap: {ys}")
+        check(all(0.0 < y < 4.0 for y in ys), f"labels leave the picture: {ys}")
 
         # The marked contact of the head-on carts.
         onsets = motion.contact_onsets(loaded["head-on-carts"][2])
@@ -96,7 +142,8 @@ def main():
         import re
         page = (args.source / "chapters/inelastic/chapter.md").read_text()
         captions = re.findall(r'figurefile\{inelastic/([a-z-]+)-strobe\} "([^"]*)"', page)
-        check(len(captions) == len(loaded), f"chapter.md shows {len(captions)} strobe pictures, there are {len(loaded)} scenes")
+        chapter_one = len(list(scenes_dir.glob("*.json")))
+        check(len(captions) == chapter_one, f"chapter.md shows {len(captions)} strobe pictures, there are {chapter_one} scenes")
         for stem, caption in captions:
             stated = [float(t) for t in re.findall(r"t = ([0-9.]+) s", caption)]
             marked = [c["t"] for c in motion.contact_onsets(loaded[stem][2])]

@@ -5,12 +5,14 @@ Every page of html/ is opened; the test fails on a formula MathJax left untypese
 not typeset, an image or figure that does not load, a link to a file or anchor that does not
 exist or lies outside html/, a console error, an uncaught exception or a resource that
 failed to load. Chapter pages must link to the previous and next chapter in the order of
-chapters/CHAPTERS. A screenshot of the main page and of every chapter page is kept in
+chapters/CHAPTERS, and each must hold a motion player of all its scenes that loads, plays,
+pauses, scrubs and changes speed with its cursor in step (motion_player_check.py). A screenshot of the main page and of every chapter page is kept in
 SCREENSHOTS (a build artefact, to be looked at).
 
     test_site.py --html build/dev/book/site/html --screenshots build/dev/book/site/screenshots"""
 import argparse
 import html as html_text
+import json
 import pathlib
 import re
 import sys
@@ -25,6 +27,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "docs"))
 import browser  # noqa: E402
 import finish_site  # noqa: E402
+import motion_player_check  # noqa: E402
 import workbook_files  # noqa: E402
 
 ARGS = None
@@ -156,6 +159,20 @@ class SiteInBrowser(unittest.TestCase):
             self.assertEqual(nav["prev"], chapters[i - 1][1].name if i > 0 else None, chapter)
             self.assertEqual(nav["next"], chapters[i + 1][1].name if i + 1 < len(chapters) else None, chapter)
             self.assertEqual(nav["index"], "index.html")
+
+    def test_every_chapter_page_has_a_working_motion_player(self):
+        """Plays, pauses, scrubs and changes speed on each chapter's player, with the cursor on
+        the chapter's own figure in step (motion_player_check.py)."""
+        chapters = chapter_pages(self.html)
+        self.assertTrue(chapters, "no chapter pages")
+        failures = []
+        for chapter, page in chapters:
+            titles = [json.loads(scene.read_text())["title"]
+                      for scene in sorted((ROOT / "chapters" / chapter / "scenes").glob("*.json"))]
+            problems = self.browser.open(page.as_uri())
+            problems += motion_player_check.check(self.browser, titles)
+            failures += [f"{page.name}: {p}" for p in problems]
+        self.assertFalse(failures, "\n" + "\n".join(failures[:40]))
 
     def test_mathjax_is_inside_the_site(self):
         mathjax = self.html / "mathjax"
