@@ -17,8 +17,9 @@
 ///    bounces off the ground;
 ///  - tilted rod:    the velocity errors of a box that lands on one edge, against the impulse
 ///    with the angular term (chapter 4, rigid_families.cpp);
-///  - torque-free box: the largest relative drift of |L| and of the kinetic energy of a box
-///    spinning freely about a direction near its middle axis (rigid_families.cpp).
+///  - torque-free box: the largest relative drift of the angular momentum L (the vector, so
+///    its length and direction) and of the kinetic energy of a box spinning freely about a
+///    direction near its middle axis (rigid_families.cpp).
 /// A run that never reaches what is measured (a bounce is missed) has error 1.
 ///
 /// The scenes' numbers and closed forms live in small structs (HeadOn, Cradle, BouncingBall)
@@ -144,7 +145,8 @@ FamilyError tilted_rod_error(const WorldSettings& settings, const ResponseModel&
 
 /// A free box, 0.5 by 0.25 by 0.1 m half extents, 1 kg, spinning at 4 rad/s about its middle
 /// axis with a small tilt, no gravity, for 10 s (it flips over and over: the tennis racket).
-/// |L| and E = 1/2 w . L are constant; the error is the largest relative drift of either.
+/// L (world frame) and E = 1/2 w . L are constant; the error is the largest of |L - L0| / |L0|
+/// and |E - E0| / E0.
 FamilyError torque_free_box_error(const WorldSettings& settings, const ResponseModel& model);
 
 /// A family for the bench: its id (file names), a title (figures), the chapter whose page
