@@ -78,18 +78,23 @@ std::vector<BenchPoint> sweep(const Family& family) {
     return points;
 }
 
-std::vector<EventCost> event_costs(const std::vector<BenchPoint>& points) {
-    std::vector<EventCost> costs;
-    const auto per_step = [](const BenchPoint& p) { return p.seconds / static_cast<double>(p.result.steps) * 1e9; };
-    for (const BenchPoint& event : points) {
-        if (event.engine != "workbook" || event.substeps != 1 || event.timing != ContactTiming::event) continue;
-        for (const BenchPoint& discrete : points)
-            if (discrete.engine == "workbook" && discrete.substeps == 1 && discrete.timing == ContactTiming::discrete &&
-                discrete.integrator == event.integrator && discrete.frame_step == event.frame_step &&
-                (event.integrator == Integrator::exact_under_gravity))
-                costs.push_back({event.frame_step, per_step(discrete), per_step(event)});
-    }
-    return costs;
+EventCost measure_event_cost(const Family& family, double time_step) {
+    EventCost cost;
+    cost.time_step = time_step;
+    cost.discrete_ns_per_step = cost.event_ns_per_step = std::numeric_limits<double>::infinity();
+    for (int round = 0; round < 5; ++round)
+        for (ContactTiming timing : {ContactTiming::discrete, ContactTiming::event}) {
+            WorldSettings settings;
+            settings.time_step = time_step;
+            settings.integrator = Integrator::exact_under_gravity;
+            settings.contact_timing = timing;
+            settings.check_finite = false;
+            const double steps = static_cast<double>(family.run(settings, family.model).steps);
+            const double ns = seconds_per_run([&] { (void)family.run(settings, family.model); }) / steps * 1e9;
+            double& best = timing == ContactTiming::event ? cost.event_ns_per_step : cost.discrete_ns_per_step;
+            best = std::min(best, ns);
+        }
+    return cost;
 }
 
 void mark_pareto_front(std::vector<BenchPoint>& points) {

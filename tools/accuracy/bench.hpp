@@ -60,13 +60,15 @@ GuardCost measure_guard_cost(const ResponseModel& model, const std::string& scen
 
 /// Event timing against discrete timing at the same world step, per step (a run's length
 /// depends on what it measures: a stacked drop that launches the small ball too low ends
-/// sooner), exact-under-gravity or the family's one integrator, no substeps.
+/// sooner), with the exact-under-gravity integrator.
 struct EventCost {
     double time_step = 0.0;
     double discrete_ns_per_step = 0.0;
     double event_ns_per_step = 0.0;
     [[nodiscard]] double ratio() const { return event_ns_per_step / discrete_ns_per_step; }
 };
-std::vector<EventCost> event_costs(const std::vector<BenchPoint>& points);
+/// Measured apart from the sweep, discrete and event runs alternating five times each and each
+/// keeping its fastest, so that the load of a shared machine falls on both alike.
+EventCost measure_event_cost(const Family& family, double time_step);
 
 }  // namespace workbook::accuracy

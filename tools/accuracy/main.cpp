@@ -79,7 +79,10 @@ int run_bench_command(const std::string& out_dir) {
             for (BenchPoint& p : peer_points(family.id)) points.push_back(std::move(p));
         if (!write_file(dir / (family.id + ".csv"), [&](std::ostream& out) { write_bench_csv(out, points); })) return 1;
         double worst_ratio = 0.0;
-        for (const EventCost& cost : event_costs(points)) {
+        std::vector<EventCost> costs;
+        if (family.contacts)
+            for (int frames_per_second : frame_rates()) costs.push_back(measure_event_cost(family, 1.0 / frames_per_second));
+        for (const EventCost& cost : costs) {
             event_cost += fmt::format("{},{:.17g},{:.4g},{:.4g},{:.4g}\n", family.id, cost.time_step,
                                       cost.discrete_ns_per_step, cost.event_ns_per_step, cost.ratio());
             worst_ratio = std::max(worst_ratio, cost.ratio());
