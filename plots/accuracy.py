@@ -33,7 +33,7 @@ TITLES = {
     "cradle": "Newton's cradle, five balls, e = 1: state after 1 s",
     "stacked-drop": "Stacked-ball drop, 0.1 kg on 1 kg, e = 1: the small ball's apex",
     "tilted-rod": "Tilted rod, 30°, lands at 3 m/s, e = 0.5: velocity and spin after the impact",
-    "torque-free-box": "Box spinning freely near its middle axis, 10 s: drift of |L| and E",
+    "torque-free-box": "Box spinning freely near its middle axis, 10 s: drift of L and E",
 }
 
 # (integrator, timing, key title, colour variable of style.gp, point type): the workbook.
@@ -47,6 +47,10 @@ NO_GRAVITY_TITLES = {"discrete": "workbook, discrete", "event": "workbook, event
 
 # Peers, by the start of their name in the CSV: (colour, open point type).
 PEERS = [("Chipmunk", "c_green", 4), ("Box2D", "c_purple", 6), ("Bullet", "'#303030'", 12)]
+
+# The families the peers run (tools/accuracy/peers.cpp); a figure of one of them drawn without
+# peers says why, so that no caption promises points the figure lacks.
+PEER_FAMILIES = {"bouncing-ball", "head-on", "cradle"}
 
 
 def quote(text):
@@ -85,7 +89,14 @@ def script_for(family, data):
         blocks.append(block(f"p{k}", sorted(point(r) for r in data if r["engine"] == engine)))
         plots.append(f"$p{k} using 1:2 with linespoints dt 3 lw 1.2 pt {point_type} ps 1.8 lc rgb {colour} "
                      f"title {quote(engine + ', 1/30 to 1/3840 s')}")
+    if family in PEER_FAMILIES and not peers:
+        plots.append("1/0 with points pt -1 title 'no peers in this build (./workbook bench accuracy installs them)'")
     front = sorted(point(r) for r in ours if r["pareto"] == "1")
+    # The front holds from its last point to the slowest configuration: drawn that far, it
+    # shows even when the fastest point is already the most accurate.
+    slowest = max(point(r)[0] for r in ours)
+    if front and front[-1][0] < slowest:
+        front.append((slowest, front[-1][1]))
     blocks.append(block("front", front))
     plots.insert(0, "$front using 1:2 with steps lw 2.5 lc rgb c_total title 'Pareto front (workbook)'")
     return "\n".join(blocks + [
