@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Pareto figures of the accuracy bench: error against run time, log-log, one per family.
 
-Reads the CSV files `workbook-accuracy bench --out DIR` wrote (one per family, beside which the
-figures go) and draws DIR/<family>.svg, .pdf and .png in the shared style (plots/style.gp):
+Reads the CSV files `workbook-accuracy bench --out DIR` wrote (pareto-<family>.csv, beside which
+the figures go) and draws DIR/pareto-<family>.svg, .pdf and .png in the shared style (plots/style.gp):
 every configuration of the workbook's sweep as a filled point, coloured by contact timing and
 shaped by integrator; the Pareto front of those points (no faster configuration is more
 accurate) as a staircase; and each peer engine of the same run (CSV column `engine`) as open
@@ -112,7 +112,7 @@ def script_for(family, data):
 
 def draw(csv_path):
     data = rows(csv_path)
-    family = csv_path.stem
+    family = csv_path.stem.removeprefix("pareto-")
     body = script_for(family, data)
     script = []
     for ext in FORMATS:
@@ -127,7 +127,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("folder", type=Path, help="where workbook-accuracy bench wrote its CSV files")
     args = parser.parse_args()
-    families = [p for p in sorted(args.folder.glob("*.csv")) if p.stem in TITLES]
+    families = [p for p in sorted(args.folder.glob("pareto-*.csv")) if p.stem.removeprefix("pareto-") in TITLES]
     if not families:
         sys.exit(f"accuracy.py: no family CSV in {args.folder} (run workbook-accuracy bench --out {args.folder})")
     for path in families:

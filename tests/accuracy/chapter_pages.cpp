@@ -78,7 +78,7 @@ WorldSettings event(double dt) { return settings_for(dt, Integrator::exact_under
 void check_section(const std::string& chapter, const std::string& figure, const std::vector<std::string>& measured,
                    std::vector<std::string> parameters) {
     std::string section = accuracy_section(chapter);
-    const std::string image = "\\image html accuracy/" + figure + ".svg";
+    const std::string image = "\\image html accuracy/pareto-" + figure + ".svg";
     CHECK(section.find(image) != std::string::npos);
     for (const std::string& value : measured) {
         INFO(chapter << ": the measured value \"" << value << "\" is on the page");
