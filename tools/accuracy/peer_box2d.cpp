@@ -51,7 +51,7 @@ public:
     [[nodiscard]] PeerState ball(std::size_t index) const override {
         const b2Vec2 p = bodies_[index]->GetPosition();
         const b2Vec2 v = bodies_[index]->GetLinearVelocity();
-        return {p.x, p.y, v.x, v.y};
+        return {static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(v.x), static_cast<double>(v.y)};
     }
 
 private:

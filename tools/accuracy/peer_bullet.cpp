@@ -59,7 +59,8 @@ public:
     [[nodiscard]] PeerState ball(std::size_t index) const override {
         const btVector3& p = bodies_[index]->getWorldTransform().getOrigin();
         const btVector3& v = bodies_[index]->getLinearVelocity();
-        return {p.x(), p.y(), v.x(), v.y()};
+        return {static_cast<double>(p.x()), static_cast<double>(p.y()), static_cast<double>(v.x()),
+                static_cast<double>(v.y())};
     }
 
 private:

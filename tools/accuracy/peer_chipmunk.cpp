@@ -2,6 +2,7 @@
 #include <chipmunk/chipmunk.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,9 @@ class ChipmunkWorld final : public PeerWorld {
 public:
     ChipmunkWorld(const PeerScene& scene, double frame_step) : space_(cpSpaceNew()), dt_(frame_step) {
         cpSpaceSetGravity(space_, cpv(0.0, -scene.g));
-        // Chipmunk's default slop, 0.1, is meant for pixels; the balls here are 0.1 m across.
+        // Chipmunk's default slop, 0.1, is meant for pixels; the balls here have radii of 0.1 and 0.5 m.
         cpSpaceSetCollisionSlop(space_, 1e-3);
-        cpSpaceSetSleepTimeThreshold(space_, INFINITY);
+        cpSpaceSetSleepTimeThreshold(space_, std::numeric_limits<cpFloat>::infinity());
         // Chipmunk multiplies two shapes' elasticities: sqrt(e) on every shape gives e.
         const double elasticity = std::sqrt(scene.restitution);
         for (const PeerBall& b : scene.balls) {
