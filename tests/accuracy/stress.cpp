@@ -1,11 +1,11 @@
 // The small stress corpus, every invariant after every step (tools/accuracy/stress.hpp states
-// the bounds). The responder is the tools' own impulse with restitution until chapter 3's
-// linear-impulse is linked (tools/accuracy/impulse_model.hpp); chapter 1's inelastic runs too.
+// the bounds), with chapter 3's linear-impulse from the response model table; chapter 1's
+// inelastic runs too.
 #include <catch2/catch_test_macros.hpp>
 
 #include <string>
 
-#include "impulse_model.hpp"
+#include "models.hpp"
 #include "stress.hpp"
 
 using namespace workbook::accuracy;
@@ -17,32 +17,22 @@ void check_scene(const StressResult& r) {
     CHECK(r.error.empty());
     CHECK(r.energy_ratio <= 1.0);
     CHECK(r.momentum_ratio <= 1.0);
-    if (r.scene == "gravity-100g") {
-        // Known and kept visible: under 100 g a single pass of projection over a dense pile can push
-        // a ball's centre past a wall for a step (the next step's wall contact brings it back). The
-        // table reports it as FAIL; here the depth is bounded by the ball's radius, so the ball
-        // still overlaps the wall and never leaves the box for good.
-        CHECK(r.box_escape < 0.25);
-    } else {
-        CHECK(r.box_ratio <= 1.0);
-    }
+    CHECK(r.box_ratio <= 1.0);
 }
 
 }  // namespace
 
-TEST_CASE("the small stress corpus keeps every invariant with the impulse model", "[stress]") {
+TEST_CASE("the small stress corpus keeps every invariant with chapter 3's linear-impulse", "[stress]") {
     for (const StressScene& scene : stress_corpus(false)) {
-        const StressResult result = run_stress(scene, model_for_benchmarks());
+        const StressResult result = run_stress(scene, chapter_model("linear-impulse"));
         CHECK(result.steps == scene.steps);
         check_scene(result);
     }
 }
 
 TEST_CASE("the small stress corpus stays finite and gains no energy with chapter 1's inelastic model", "[stress]") {
-    const workbook::ResponseModel* inelastic = workbook::find_response_model("inelastic");
-    REQUIRE(inelastic != nullptr);
     for (const StressScene& scene : stress_corpus(false)) {
-        const StressResult r = run_stress(scene, *inelastic);
+        const StressResult r = run_stress(scene, chapter_model("inelastic"));
         INFO(scene.name << ": " << r.error);
         CHECK(r.steps == scene.steps);
         CHECK(r.error.empty());

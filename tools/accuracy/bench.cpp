@@ -12,13 +12,9 @@
 
 namespace workbook::accuracy {
 
-namespace {
-
-/// Processor time of one run, s: batches of runs each lasting at least 10 ms of processor time,
-/// the fastest batch's mean. Processor time (std::clock) leaves out the time other users of a
-/// shared machine take; batches make its coarse ticks small against what is measured.
-template <typename Run>
-double fastest_of(Run&& run) {
+double seconds_per_run(const std::function<void()>& run) {
+    // Processor time (std::clock) leaves out the time other users of a shared machine take;
+    // batches make its coarse ticks small against what is measured.
     double best = std::numeric_limits<double>::infinity();
     for (int batch = 0; batch < 3; ++batch) {
         const std::clock_t start = std::clock();
@@ -34,8 +30,6 @@ double fastest_of(Run&& run) {
     return best;
 }
 
-}  // namespace
-
 const char* integrator_name(Integrator integrator) {
     switch (integrator) {
         case Integrator::semi_implicit_euler: return "semi-implicit-euler";
@@ -47,13 +41,23 @@ const char* integrator_name(Integrator integrator) {
 
 const char* timing_name(ContactTiming timing) { return timing == ContactTiming::event ? "event" : "discrete"; }
 
-std::vector<BenchPoint> sweep(const Family& family, const ResponseModel& model) {
+std::vector<int> frame_rates() {
+    std::vector<int> rates;
+    for (int frames_per_second = 30; frames_per_second <= 3840; frames_per_second *= 2) rates.push_back(frames_per_second);
+    return rates;
+}
+
+std::vector<BenchPoint> sweep(const Family& family) {
+    std::vector<Integrator> integrators{Integrator::exact_under_gravity};
+    if (family.gravity) integrators.insert(integrators.begin(), Integrator::semi_implicit_euler);
+    std::vector<ContactTiming> timings{ContactTiming::discrete};
+    if (family.contacts) timings.push_back(ContactTiming::event);
     std::vector<BenchPoint> points;
-    for (int frames_per_second = 30; frames_per_second <= 3840; frames_per_second *= 2)
+    for (int frames_per_second : frame_rates())
         for (int substeps : {1, 2, 4}) {
             if (frames_per_second * substeps > 3840) continue;
-            for (Integrator integrator : {Integrator::semi_implicit_euler, Integrator::exact_under_gravity})
-                for (ContactTiming timing : {ContactTiming::discrete, ContactTiming::event}) {
+            for (Integrator integrator : integrators)
+                for (ContactTiming timing : timings) {
                     BenchPoint point;
                     point.family = family.id;
                     point.frame_step = 1.0 / frames_per_second;
@@ -65,8 +69,8 @@ std::vector<BenchPoint> sweep(const Family& family, const ResponseModel& model) 
                     settings.integrator = integrator;
                     settings.contact_timing = timing;
                     settings.check_finite = false;
-                    point.result = family.run(settings, model);
-                    point.seconds = fastest_of([&] { (void)family.run(settings, model); });
+                    point.result = family.run(settings, family.model);
+                    point.seconds = seconds_per_run([&] { (void)family.run(settings, family.model); });
                     points.push_back(point);
                 }
         }
@@ -74,9 +78,29 @@ std::vector<BenchPoint> sweep(const Family& family, const ResponseModel& model) 
     return points;
 }
 
+EventCost measure_event_cost(const Family& family, double time_step) {
+    EventCost cost;
+    cost.time_step = time_step;
+    cost.discrete_ns_per_step = cost.event_ns_per_step = std::numeric_limits<double>::infinity();
+    for (int round = 0; round < 5; ++round)
+        for (ContactTiming timing : {ContactTiming::discrete, ContactTiming::event}) {
+            WorldSettings settings;
+            settings.time_step = time_step;
+            settings.integrator = Integrator::exact_under_gravity;
+            settings.contact_timing = timing;
+            settings.check_finite = false;
+            const double steps = static_cast<double>(family.run(settings, family.model).steps);
+            const double ns = seconds_per_run([&] { (void)family.run(settings, family.model); }) / steps * 1e9;
+            double& best = timing == ContactTiming::event ? cost.event_ns_per_step : cost.discrete_ns_per_step;
+            best = std::min(best, ns);
+        }
+    return cost;
+}
+
 void mark_pareto_front(std::vector<BenchPoint>& points) {
     std::vector<BenchPoint*> by_time;
-    for (BenchPoint& p : points) by_time.push_back(&p);
+    for (BenchPoint& p : points)
+        if (p.engine == "workbook") by_time.push_back(&p);
     std::sort(by_time.begin(), by_time.end(), [](const BenchPoint* a, const BenchPoint* b) {
         return a->seconds != b->seconds ? a->seconds < b->seconds : a->result.error < b->result.error;
     });
@@ -88,11 +112,15 @@ void mark_pareto_front(std::vector<BenchPoint>& points) {
 }
 
 void write_bench_csv(std::ostream& out, const std::vector<BenchPoint>& points) {
-    out << "family,frame_step,substeps,time_step,integrator,timing,steps,seconds,error,bounce_time_error,pareto\n";
-    for (const BenchPoint& p : points)
-        fmt::print(out, "{},{:.17g},{},{:.17g},{},{},{},{:.6g},{:.17g},{:.17g},{}\n", p.family, p.frame_step, p.substeps,
-                   p.frame_step / p.substeps, integrator_name(p.integrator), timing_name(p.timing), p.result.steps,
-                   p.seconds, p.result.error, p.result.time_error, p.pareto ? 1 : 0);
+    // Peers choose their own integrator and contact timing; their columns say "own".
+    out << "family,engine,frame_step,substeps,time_step,integrator,timing,steps,seconds,error,bounce_time_error,pareto\n";
+    for (const BenchPoint& p : points) {
+        const bool peer = p.engine != "workbook";
+        fmt::print(out, "{},{},{:.17g},{},{:.17g},{},{},{},{:.6g},{:.17g},{:.17g},{}\n", p.family, p.engine, p.frame_step,
+                   p.substeps, p.frame_step / p.substeps, peer ? "own" : integrator_name(p.integrator),
+                   peer ? "own" : timing_name(p.timing), p.result.steps, p.seconds, p.result.error, p.result.time_error,
+                   p.pareto ? 1 : 0);
+    }
 }
 
 GuardCost measure_guard_cost(const ResponseModel& model, const std::string& scene_name, int steps) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
+#include "models.hpp"
 #include "workbook/time_series.hpp"
 
 namespace workbook::accuracy {
@@ -27,15 +29,16 @@ std::size_t run_until(World& world, double end) {
     return steps;
 }
 
-/// Body i's position and velocity against free flight from `x0` at `v_before`, then `v_after`
-/// from `t_hit` on; the error as max(|dv| / v_scale, |dx| / x_scale).
-double straight_line_error(const RigidBody& body, double x0, double v_before, double v_after, double t_hit, double t,
+/// A body's position and velocity along x against free flight from `x0` at `v_before`, then
+/// `v_after` from `t_hit` on; the error as max(|dv| / v_scale, |dx| / x_scale).
+double straight_line_error(double x, double vx, double x0, double v_before, double v_after, double t_hit, double t,
                            double v_scale, double x_scale) {
     const double exact_x = x0 + v_before * t_hit + v_after * (t - t_hit);
-    const double dv = length(body.velocity - Vector3{v_after, 0.0, 0.0});
-    const double dx = length(body.position - Vector3{exact_x, 0.0, 0.0});
-    return std::max(dv / v_scale, dx / x_scale);
+    return std::max(std::abs(vx - v_after) / v_scale, std::abs(x - exact_x) / x_scale);
 }
+
+/// The same for a body of the workbook, which must also stay on the x axis.
+double off_axis(const RigidBody& body) { return std::hypot(body.position.y, body.position.z); }
 
 }  // namespace
 
@@ -54,21 +57,34 @@ World BouncingBall::world(WorldSettings settings, const ResponseModel& model) co
     return World({ball(1.0, radius, {0.0, h0 + radius, 0.0}, {}, restitution), ground}, with_gravity(settings, g), model);
 }
 
+std::pair<double, double> BouncingBall::errors(std::span<const Bounce> seen, int count) const {
+    if (static_cast<int>(seen.size()) < count) return {1.0, 0.0};
+    double apex_error = 0.0, time_error = 0.0;
+    for (int k = 1; k <= count; ++k) {
+        const Bounce& b = seen[static_cast<std::size_t>(k - 1)];
+        apex_error = std::max(apex_error, std::abs(b.apex - apex(k)) / apex(k));
+        time_error = std::max(time_error, std::abs(b.time - bounce_time(k)));
+    }
+    return {apex_error, time_error};
+}
+
+void BounceObserver::after_step(double t, double y, double vy) {
+    if (previous_vy_ <= 0.0 && vy > 0.0) {
+        const double height = y - ball_.radius;
+        const double tau = (std::sqrt(vy * vy + 2.0 * ball_.g * std::max(height, 0.0)) - vy) / ball_.g;
+        bounces_.push_back({t - tau, height + vy * vy / (2.0 * ball_.g)});
+    }
+    previous_vy_ = vy;
+}
+
 std::vector<Bounce> observe_bounces(World& world, const BouncingBall& ball, int count, double max_time) {
-    std::vector<Bounce> bounces;
-    double previous_vy = world.bodies()[0].velocity.y;
-    while (static_cast<int>(bounces.size()) < count && world.time() < max_time) {
+    BounceObserver observer(ball, world.bodies()[0].velocity.y);
+    while (static_cast<int>(observer.bounces().size()) < count && world.time() < max_time) {
         world.step();
         const RigidBody& b = world.bodies()[0];
-        const double vy = b.velocity.y;
-        if (previous_vy <= 0.0 && vy > 0.0) {
-            const double height = b.position.y - ball.radius;
-            const double tau = (std::sqrt(vy * vy + 2.0 * ball.g * std::max(height, 0.0)) - vy) / ball.g;
-            bounces.push_back({world.time() - tau, height + vy * vy / (2.0 * ball.g)});
-        }
-        previous_vy = vy;
+        observer.after_step(world.time(), b.position.y, b.velocity.y);
     }
-    return bounces;
+    return observer.bounces();
 }
 
 FamilyError bouncing_ball_error(const WorldSettings& settings, const ResponseModel& model, int bounces) {
@@ -77,49 +93,60 @@ FamilyError bouncing_ball_error(const WorldSettings& settings, const ResponseMod
     const std::vector<Bounce> seen = observe_bounces(world, ball, bounces, ball.bounce_time(bounces) + 1.0);
     FamilyError result;
     result.steps = world.steps_taken();
-    if (static_cast<int>(seen.size()) < bounces) return result;
-    result.error = 0.0;
-    for (int k = 1; k <= bounces; ++k) {
-        const Bounce& b = seen[static_cast<std::size_t>(k - 1)];
-        result.error = std::max(result.error, std::abs(b.apex - ball.apex(k)) / ball.apex(k));
-        result.time_error = std::max(result.time_error, std::abs(b.time - ball.bounce_time(k)));
-    }
+    std::tie(result.error, result.time_error) = ball.errors(seen, bounces);
     return result;
 }
 
-FamilyError head_on_error(const WorldSettings& settings, const ResponseModel& model) {
-    // 1 kg at 2 m/s meets 3 kg at -1 m/s, e = 0.5, surfaces 0.3071 m apart: impact at 0.10237 s.
-    const double m1 = 1.0, m2 = 3.0, v1 = 2.0, v2 = -1.0, e = 0.5, r = 0.5, gap = 0.3071;
-    const double x1 = -(2.0 * r + gap), x2 = 0.0;
-    const double t_hit = gap / (v1 - v2);
-    const double p = m1 * v1 + m2 * v2;
-    const double v1_after = (p - m2 * e * (v1 - v2)) / (m1 + m2);
-    const double v2_after = (p + m1 * e * (v1 - v2)) / (m1 + m2);
-    World world({ball(m1, r, {x1, 0, 0}, {v1, 0, 0}, e), ball(m2, r, {x2, 0, 0}, {v2, 0, 0}, e)},
+double HeadOn::v1_after() const { return (m1 * v1 + m2 * v2 - m2 * restitution * (v1 - v2)) / (m1 + m2); }
+double HeadOn::v2_after() const { return (m1 * v1 + m2 * v2 + m1 * restitution * (v1 - v2)) / (m1 + m2); }
+
+double HeadOn::error(double t, double xa, double va, double xb, double vb) const {
+    const double t_hit = time_of_impact();
+    return std::max(straight_line_error(xa, va, x1(), v1, v1_after(), t_hit, t, v1 - v2, 2.0 * radius),
+                    straight_line_error(xb, vb, x2(), v2, v2_after(), t_hit, t, v1 - v2, 2.0 * radius));
+}
+
+FamilyError head_on_error(const WorldSettings& settings, const ResponseModel& model, const HeadOn& pair) {
+    World world({ball(pair.m1, pair.radius, {pair.x1(), 0, 0}, {pair.v1, 0, 0}, pair.restitution),
+                 ball(pair.m2, pair.radius, {pair.x2(), 0, 0}, {pair.v2, 0, 0}, pair.restitution)},
                 with_gravity(settings, 0.0), model);
     FamilyError result;
     result.steps = run_until(world, 1.0);
-    const double t = world.time();
-    result.error = std::max(straight_line_error(world.bodies()[0], x1, v1, v1_after, t_hit, t, v1 - v2, 2.0 * r),
-                            straight_line_error(world.bodies()[1], x2, v2, v2_after, t_hit, t, v1 - v2, 2.0 * r));
+    const RigidBody& a = world.bodies()[0];
+    const RigidBody& b = world.bodies()[1];
+    result.error = std::max({pair.error(world.time(), a.position.x, a.velocity.x, b.position.x, b.velocity.x),
+                             off_axis(a) / (2.0 * pair.radius), off_axis(b) / (2.0 * pair.radius)});
     return result;
 }
 
+double Cradle::start_x(int i) const { return i == 0 ? -2.0 * radius - gap : 2.0 * radius * (i - 1); }
+
+double Cradle::error(double t, std::span<const double> x, std::span<const double> vx) const {
+    const double t_hit = gap / speed;
+    double worst = straight_line_error(x[0], vx[0], start_x(0), speed, 0.0, t_hit, t, speed, radius);
+    for (int i = 1; i < row; ++i) {  // the inner balls of the row stay put
+        const auto k = static_cast<std::size_t>(i);
+        worst = std::max(worst, straight_line_error(x[k], vx[k], start_x(i), 0.0, 0.0, t_hit, t, speed, radius));
+    }
+    return std::max(worst, straight_line_error(x[row], vx[row], start_x(row), 0.0, speed, t_hit, t, speed, radius));
+}
+
 FamilyError cradle_error(const WorldSettings& settings, const ResponseModel& model) {
-    const double r = 0.1, v = 1.0, gap = 0.0513;
-    std::vector<RigidBody> balls{ball(1.0, r, {-2.0 * r - gap, 0, 0}, {v, 0, 0}, 1.0)};
-    for (int i = 0; i < 4; ++i) balls.push_back(ball(1.0, r, {2.0 * r * i, 0, 0}, {}, 1.0));
+    const Cradle cradle;
+    std::vector<RigidBody> balls;
+    for (int i = 0; i <= Cradle::row; ++i)
+        balls.push_back(ball(1.0, cradle.radius, {cradle.start_x(i), 0, 0}, {i == 0 ? cradle.speed : 0.0, 0, 0}, 1.0));
     World world(balls, with_gravity(settings, 0.0), model);
     FamilyError result;
     result.steps = run_until(world, 1.0);
-    const double t = world.time();
-    const double t_hit = gap / v;
-    double error = straight_line_error(world.bodies()[0], -2.0 * r - gap, v, 0.0, t_hit, t, v, r);
-    for (int i = 1; i < 4; ++i)  // the three inner balls of the row, at 2 r (i - 1), stay put
-        error = std::max(error, straight_line_error(world.bodies()[static_cast<std::size_t>(i)], 2.0 * r * (i - 1), 0.0,
-                                                    0.0, t_hit, t, v, r));
-    error = std::max(error, straight_line_error(world.bodies()[4], 6.0 * r, 0.0, v, t_hit, t, v, r));
-    result.error = error;
+    double x[Cradle::row + 1], vx[Cradle::row + 1];
+    double off = 0.0;
+    for (std::size_t i = 0; i <= Cradle::row; ++i) {
+        x[i] = world.bodies()[i].position.x;
+        vx[i] = world.bodies()[i].velocity.x;
+        off = std::max(off, off_axis(world.bodies()[i]) / cradle.radius);
+    }
+    result.error = std::max(cradle.error(world.time(), x, vx), off);
     return result;
 }
 
@@ -153,12 +180,54 @@ FamilyError stacked_drop_error(const WorldSettings& settings, const ResponseMode
     return result;
 }
 
+FamilyError resting_stack_error(const WorldSettings& settings, const ResponseModel& model, int balls) {
+    const double r = 0.1;
+    std::vector<RigidBody> bodies{make_immovable_plane({0.0, 1.0, 0.0}, {})};
+    for (int i = 0; i < balls; ++i) bodies.push_back(ball(1.0, r, {0.0, r * (2 * i + 1), 0.0}, {}, 0.0));
+    World world(bodies, with_gravity(settings, 9.81), model);
+    const std::size_t steps = step_count(1.0, settings.time_step);
+    FamilyError result;
+    result.error = 0.0;
+    for (std::size_t n = 0; n < steps; ++n) {
+        world.step();
+        for (int i = 0; i < balls; ++i) {
+            const double sink = r * (2 * i + 1) - world.bodies()[static_cast<std::size_t>(i) + 1].position.y;
+            result.error = std::max(result.error, sink / r);
+        }
+    }
+    result.steps = steps;
+    return result;
+}
+
 std::vector<Family> families() {
-    return {{"bouncing-ball", "Bouncing ball, e = 0.8: apexes of the first 10 bounces against e^{2k} h_0",
-             [](const WorldSettings& s, const ResponseModel& m) { return bouncing_ball_error(s, m, 10); }},
-            {"head-on", "Head-on pair, 1 kg and 3 kg, e = 0.5: velocities and positions after 1 s", &head_on_error},
-            {"cradle", "Newton's cradle, five balls, e = 1: velocities and positions after 1 s", &cradle_error},
-            {"stacked-drop", "Stacked-ball drop, 0.1 kg on 1 kg, e = 1: the small ball's apex", &stacked_drop_error}};
+    const ResponseModel inelastic = chapter_model("inelastic");
+    const ResponseModel linear = chapter_model("linear-impulse");
+    const ResponseModel angular = chapter_model("angular-impulse");
+    return {
+        {"head-on-inelastic", "Head-on pair, 1 kg and 3 kg, perfectly inelastic: velocities and positions after 1 s",
+         "inelastic", inelastic,
+         [](const WorldSettings& s, const ResponseModel& m) {
+             HeadOn pair;
+             pair.restitution = 0.0;
+             return head_on_error(s, m, pair);
+         },
+         false, true},
+        {"resting-stack", "Three balls stacked on the ground, at rest: the deepest a ball sinks in 1 s, over its radius",
+         "projection", inelastic_with_projection(),
+         [](const WorldSettings& s, const ResponseModel& m) { return resting_stack_error(s, m, 3); }},
+        {"bouncing-ball", "Bouncing ball, e = 0.8: apexes of the first 10 bounces against e^{2k} h_0", "linear-impulse",
+         linear, [](const WorldSettings& s, const ResponseModel& m) { return bouncing_ball_error(s, m, 10); }},
+        {"head-on", "Head-on pair, 1 kg and 3 kg, e = 0.5: velocities and positions after 1 s", "linear-impulse", linear,
+         [](const WorldSettings& s, const ResponseModel& m) { return head_on_error(s, m); }, false, true},
+        {"cradle", "Newton's cradle, five balls, e = 1: velocities and positions after 1 s", "linear-impulse", linear,
+         &cradle_error, false, true},
+        {"stacked-drop", "Stacked-ball drop, 0.1 kg on 1 kg, e = 1: the small ball's apex", "linear-impulse", linear,
+         &stacked_drop_error},
+        {"tilted-rod", "Tilted rod, 2 kg, 1 m, 30 degrees, lands at 3 m/s, e = 0.5: velocity and spin after the impact",
+         "angular-impulse", angular, &tilted_rod_error},
+        {"torque-free-box", "Box spinning freely near its middle axis for 10 s: drift of |L| and of E", "angular-impulse",
+         angular, &torque_free_box_error, false, false},
+    };
 }
 
 }  // namespace workbook::accuracy

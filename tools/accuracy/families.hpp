@@ -5,15 +5,28 @@
 /// Every family builds its world for the given WorldSettings (time step, integrator, contact
 /// timing) and model, runs it, and returns one error number, relative and dimensionless, so
 /// that the families can share the bench's axes:
+///  - head-on pair:  the largest velocity error over |v1 - v2| and position error over r1 + r2,
+///    at the end, against the closed-form impulse and the exact time of impact (chapter 1 with
+///    e = 0, chapter 3 with e = 0.5);
+///  - resting stack: the deepest any ball of a column resting on the ground sinks below its
+///    resting height, over its radius (chapter 2);
 ///  - bouncing ball: the largest relative error of the apex after bounce k against e^(2k) h0,
 ///    over the first `bounces` bounces (and, beside it, of the bounce times, s);
-///  - head-on pair:  the largest velocity error over |v1 - v2| and position error over r1 + r2,
-///    at the end, against the closed-form impulse and the exact time of impact;
-///  - cradle:        the same for a ball that hits a row of four touching balls (cradle_error());
+///  - cradle:        the head-on error for a ball that hits a row of four touching balls;
 ///  - stacked drop:  the relative error of the small ball's apex after a big ball carrying it
-///    bounces off the ground.
+///    bounces off the ground;
+///  - tilted rod:    the velocity errors of a box that lands on one edge, against the impulse
+///    with the angular term (chapter 4, rigid_families.cpp);
+///  - torque-free box: the largest relative drift of the angular momentum L (the vector, so
+///    its length and direction) and of the kinetic energy of a box spinning freely about a
+///    direction near its middle axis (rigid_families.cpp).
 /// A run that never reaches what is measured (a bounce is missed) has error 1.
+///
+/// The scenes' numbers and closed forms live in small structs (HeadOn, Cradle, BouncingBall)
+/// so that the peer engines (peers.hpp) run the same scenes and are measured the same way.
 
+#include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,13 +53,55 @@ struct BouncingBall {
     [[nodiscard]] double apex(int k) const;
     /// The world: ball (index 0) and ground (index 1).
     [[nodiscard]] World world(WorldSettings settings, const ResponseModel& model) const;
+    /// The largest relative apex error and the largest bounce-time error (s) of `seen` against
+    /// the first `count` bounces; error 1 when fewer were seen.
+    [[nodiscard]] std::pair<double, double> errors(std::span<const Bounce> seen, int count) const;
+};
+
+/// Finds bounces in a ball's state read after every step: a bounce is a step after which
+/// v_y > 0 where it was <= 0 before; from the state (y, v_y) at the end of that step and free
+/// flight, the touch time is t - tau with tau = (sqrt(v_y^2 + 2 g (y - r)) - v_y) / g, and the
+/// apex is y - r + v_y^2 / (2 g). Used for the workbook and the peers alike.
+class BounceObserver {
+public:
+    BounceObserver(const BouncingBall& ball, double start_vy) : ball_(ball), previous_vy_(start_vy) {}
+    /// The state after a step that ended at time t.
+    void after_step(double t, double y, double vy);
+    [[nodiscard]] const std::vector<Bounce>& bounces() const { return bounces_; }
+
+private:
+    BouncingBall ball_;
+    double previous_vy_;
+    std::vector<Bounce> bounces_;
 };
 
 /// Steps `world` (a BouncingBall world) until `count` bounces are seen or `max_time` passes.
-/// A bounce is a step after which v_y > 0 where it was <= 0 before; from the state (y, v_y) at
-/// the end of that step and free flight, the touch time is t - tau with
-/// tau = (sqrt(v_y^2 + 2 g (y - r)) - v_y) / g, and the apex is y - r + v_y^2 / (2 g).
 std::vector<Bounce> observe_bounces(World& world, const BouncingBall& ball, int count, double max_time);
+
+/// Two balls meeting head-on along x, no gravity: 1 kg at 2 m/s and 3 kg at -1 m/s, radius
+/// 0.5 m, surfaces 0.3071 m apart, so that they touch at 0.10237 s (between steps).
+struct HeadOn {
+    double m1 = 1.0, m2 = 3.0, v1 = 2.0, v2 = -1.0, radius = 0.5, gap = 0.3071;
+    double restitution = 0.5;
+    [[nodiscard]] double x1() const { return -(2.0 * radius + gap); }
+    [[nodiscard]] double x2() const { return 0.0; }
+    [[nodiscard]] double time_of_impact() const { return gap / (v1 - v2); }
+    /// Closed form: v1' = (p - m2 e (v1 - v2)) / (m1 + m2), v2' = (p + m1 e (v1 - v2)) / (m1 + m2).
+    [[nodiscard]] double v1_after() const;
+    [[nodiscard]] double v2_after() const;
+    /// max(|dv| / (v1 - v2), |dx| / (2 r)) over both balls at time t.
+    [[nodiscard]] double error(double t, double x1, double vx1, double x2, double vx2) const;
+};
+
+/// Newton's cradle: five touching balls at rest; a sixth, 0.0513 m away at 1 m/s, hits the row
+/// (e = 1, no gravity). Closed form: the moving ball stops, the last ball leaves at 1 m/s.
+struct Cradle {
+    double radius = 0.1, speed = 1.0, gap = 0.0513;
+    static constexpr int row = 4;  ///< balls in the row besides the incoming one
+    [[nodiscard]] double start_x(int i) const;  ///< ball i = 0 (incoming) .. row
+    /// The largest of |dv| / v and |dx| / r over all balls at time t.
+    [[nodiscard]] double error(double t, std::span<const double> x, std::span<const double> vx) const;
+};
 
 /// The result of one family run.
 struct FamilyError {
@@ -56,22 +111,58 @@ struct FamilyError {
 };
 
 FamilyError bouncing_ball_error(const WorldSettings& settings, const ResponseModel& model, int bounces = 10);
-FamilyError head_on_error(const WorldSettings& settings, const ResponseModel& model);
-/// Five touching balls at rest; a sixth, 0.05 m away at 1 m/s, hits the row (e = 1, no gravity).
-/// Closed form: the moving ball stops and the last ball leaves at 1 m/s, everyone else at rest.
+FamilyError head_on_error(const WorldSettings& settings, const ResponseModel& model, const HeadOn& pair = {});
 FamilyError cradle_error(const WorldSettings& settings, const ResponseModel& model);
 FamilyError stacked_drop_error(const WorldSettings& settings, const ResponseModel& model);
 
-/// A family for the bench: its id (file names), a title (figures) and its run.
+/// A column of `balls` balls (1 kg, radius 0.1 m, e = 0) resting on the ground and on each
+/// other, under gravity, for 1 s. At rest is the closed form: every ball stays at its height.
+FamilyError resting_stack_error(const WorldSettings& settings, const ResponseModel& model, int balls = 3);
+
+/// A box 1 m by 5 cm by 5 cm, 2 kg, tilted 30 degrees and not spinning, dropped so that its
+/// lower edge lands at u = 3 m/s on frictionless ground, e = 0.5 (chapter 4's worked example,
+/// with gravity). Its numbers and closed form:
+struct TiltedRod {
+    double mass = 2.0, length = 1.0, thickness = 0.05, tilt_degrees = 30.0, impact_speed = 3.0;
+    double restitution = 0.5, g = 9.81;
+    /// Horizontal distance from the centre to the lower edge, (L/2) cos(theta) - (t/2) sin(theta).
+    [[nodiscard]] double lever() const;
+    /// The moment about the axis along the edge, m (L^2 + t^2) / 12.
+    [[nodiscard]] double moment() const;
+    /// J = (1 + e) u / (1/m + d^2 / I); for a thin rod (t = 0), (1 + e) m u / (1 + 3 cos^2 theta).
+    [[nodiscard]] double impulse() const;
+    /// The centre's vertical velocity and the spin just after the impact: -u + J/m and d J / I.
+    [[nodiscard]] double velocity_after() const;
+    [[nodiscard]] double spin_after() const;
+    /// When the edge lands, dropped from rest: u / g.
+    [[nodiscard]] double time_of_impact() const { return impact_speed / g; }
+    /// The world: box (index 0) and ground (index 1); the edge is u^2 / (2 g) above the ground.
+    [[nodiscard]] World world(WorldSettings settings, const ResponseModel& model) const;
+};
+/// At the end of the step that answered the landing: max(|v_y - v_exact(t)|, |w - w'| d) / u,
+/// with v_exact(t) = v' - g (t - t_hit) (free flight after the impact).
+FamilyError tilted_rod_error(const WorldSettings& settings, const ResponseModel& model);
+
+/// A free box, 0.5 by 0.25 by 0.1 m half extents, 1 kg, spinning at 4 rad/s about its middle
+/// axis with a small tilt, no gravity, for 10 s (it flips over and over: the tennis racket).
+/// L (world frame) and E = 1/2 w . L are constant; the error is the largest of |L - L0| / |L0|
+/// and |E - E0| / E0.
+FamilyError torque_free_box_error(const WorldSettings& settings, const ResponseModel& model);
+
+/// A family for the bench: its id (file names), a title (figures), the chapter whose page
+/// shows it, the chapter model it runs with, and its run.
 struct Family {
     std::string id;
     std::string title;
+    std::string chapter;
+    ResponseModel model;
     FamilyError (*run)(const WorldSettings&, const ResponseModel&);
-    bool gravity = true;  ///< whether settings.gravity should be set (the family sets its own value)
+    bool gravity = true;   ///< false: no gravity, so the integrators move bodies alike and one is swept
+    bool contacts = true;  ///< false: no contact, so the timing changes nothing and only discrete is swept
 };
 
-/// Every family with a closed form so far. Chapter 2 and 4 families (tilted rod, torque-free box)
-/// join when those chapters exist.
+/// Every family with a closed form, in chapter order, each with its chapter's response model
+/// from the table (chapter_model()).
 std::vector<Family> families();
 
 }  // namespace workbook::accuracy

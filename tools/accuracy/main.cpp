@@ -10,10 +10,11 @@
 #include <string>
 
 #include <filesystem>
-#include <map>
+#include <stdexcept>
 
 #include "bench.hpp"
-#include "impulse_model.hpp"
+#include "models.hpp"
+#include "peers.hpp"
 #include "stress.hpp"
 #include "stress_table.hpp"
 #include "workbook/response_model.hpp"
@@ -23,9 +24,11 @@ namespace {
 using namespace workbook::accuracy;
 
 const workbook::ResponseModel& model_named(const std::string& name) {
-    if (name.empty()) return model_for_benchmarks();
-    if (const auto* model = workbook::find_response_model(name)) return *model;
-    throw CLI::ValidationError("--responder", "no response model called \"" + name + "\"");
+    try {
+        return chapter_model(name.empty() ? default_stress_model : name);
+    } catch (const std::invalid_argument& error) {
+        throw CLI::ValidationError("--responder", error.what());
+    }
 }
 
 int run_stress_command(bool full, const std::string& csv_path, const std::string& responder) {
@@ -62,38 +65,49 @@ bool write_file(const std::filesystem::path& path, const std::function<void(std:
     return false;
 }
 
-int run_bench_command(const std::string& out_dir, const std::string& responder) {
-    const workbook::ResponseModel& model = model_named(responder);
+int run_bench_command(const std::string& out_dir) {
     const std::filesystem::path dir(out_dir);
     std::filesystem::create_directories(dir);
-    fmt::print("accuracy bench, responder {}\n", model.name);
-    std::string event_cost = "family,time_step,discrete_seconds,event_seconds,ratio\n";
+    std::string peers;
+    for (const PeerEngine& engine : peer_engines()) peers += (peers.empty() ? "" : ", ") + engine.name;
+    fmt::print("accuracy bench; peers: {}\n", peers.empty() ? "none found (install libchipmunk-dev, libbox2d-dev, libbullet-dev)" : peers);
+    std::string event_cost = "family,time_step,discrete_ns_per_step,event_ns_per_step,ratio\n";
     for (const Family& family : families()) {
-        fmt::print(stderr, "  {} ...\n", family.id);
-        const std::vector<BenchPoint> points = sweep(family, model);
-        if (!write_file(dir / (family.id + ".csv"), [&](std::ostream& out) { write_bench_csv(out, points); })) return 1;
-        // Event timing against discrete timing at the same step (exact-under-gravity, no substeps).
-        std::map<double, std::pair<double, double>> by_step;
-        for (const BenchPoint& p : points)
-            if (p.substeps == 1 && p.integrator == workbook::Integrator::exact_under_gravity)
-                (p.timing == workbook::ContactTiming::event ? by_step[p.frame_step].second : by_step[p.frame_step].first) =
-                    p.seconds;
+        fmt::print(stderr, "  {} ({}) ...\n", family.id, family.model.name);
+        std::vector<BenchPoint> points = sweep(family);
+        if (peers_run(family.id))
+            for (BenchPoint& p : peer_points(family.id)) points.push_back(std::move(p));
+        // Named pareto-<family>: Doxygen copies every figure into one folder by its file name, and
+        // chapter 3 has a scene figure called bouncing-ball too.
+        if (!write_file(dir / ("pareto-" + family.id + ".csv"), [&](std::ostream& out) { write_bench_csv(out, points); }))
+            return 1;
         double worst_ratio = 0.0;
-        for (const auto& [step, times] : by_step) {
-            event_cost += fmt::format("{},{:.17g},{:.6g},{:.6g},{:.4g}\n", family.id, step, times.first, times.second,
-                                      times.second / times.first);
-            worst_ratio = std::max(worst_ratio, times.second / times.first);
+        std::vector<EventCost> costs;
+        if (family.contacts)
+            for (int frames_per_second : frame_rates()) costs.push_back(measure_event_cost(family, 1.0 / frames_per_second));
+        for (const EventCost& cost : costs) {
+            event_cost += fmt::format("{},{:.17g},{:.4g},{:.4g},{:.4g}\n", family.id, cost.time_step,
+                                      cost.discrete_ns_per_step, cost.event_ns_per_step, cost.ratio());
+            worst_ratio = std::max(worst_ratio, cost.ratio());
         }
-        const auto best = [&points](workbook::ContactTiming timing) {
+        const auto best = [&points](const std::string& engine, workbook::ContactTiming timing) {
             double e = 1e300;
             for (const BenchPoint& p : points)
-                if (p.timing == timing) e = std::min(e, p.result.error);
+                if (p.engine == engine && (engine != "workbook" || p.timing == timing)) e = std::min(e, p.result.error);
             return e;
         };
-        fmt::print("  {:<14} best error discrete {:.3g}, event {:.3g}; event / discrete run time at the same step <= {:.2f}\n",
-                   family.id, best(workbook::ContactTiming::discrete), best(workbook::ContactTiming::event), worst_ratio);
+        std::string line = fmt::format("  {:<17} best error discrete {:.3g}", family.id,
+                                       best("workbook", workbook::ContactTiming::discrete));
+        if (family.contacts)
+            line += fmt::format(", event {:.3g}; event / discrete per step <= {:.2f}",
+                                best("workbook", workbook::ContactTiming::event), worst_ratio);
+        if (peers_run(family.id))
+            for (const PeerEngine& engine : peer_engines())
+                line += fmt::format("; {} {:.3g}", engine.name, best(engine.name, workbook::ContactTiming::discrete));
+        fmt::print("{}\n", line);
     }
     if (!write_file(dir / "event-cost.csv", [&](std::ostream& out) { out << event_cost; })) return 1;
+    const workbook::ResponseModel& model = chapter_model(default_stress_model);
     std::string guard_csv = "scene,bodies,ns_per_step_on,ns_per_step_off,overhead_percent\n";
     for (const auto& [scene, steps] : {std::pair<std::string, int>{"steps-2e4", 200'000}, {"zero-gravity", 1'000}}) {
         const GuardCost guard = measure_guard_cost(model, scene, steps);
@@ -117,17 +131,16 @@ int main(int argc, char** argv) {
     auto* stress = app.add_subcommand("stress", "Run the stress corpus and print its table.");
     stress->add_flag("--full", full, "The full corpus (10,000 bodies, 10^6 steps; minutes) instead of the small one");
     stress->add_option("--csv", csv_path, "Also write the table as CSV here");
-    stress->add_option("--responder", responder, "A response model by name (default: linear-impulse if linked, else the tools' own impulse)");
+    stress->add_option("--responder", responder, "A response model by name (default: chapter 3's linear-impulse)");
 
     std::string out_dir = "accuracy";
     auto* bench = app.add_subcommand("bench", "Sweep time step, substeps, integrator and contact timing; write one CSV per family.");
     bench->add_option("--out", out_dir, "Folder for the CSV files");
-    bench->add_option("--responder", responder, "A response model by name (default as for stress)");
 
     CLI11_PARSE(app, argc, argv);
     try {
         if (*stress) return run_stress_command(full, csv_path, responder);
-        if (*bench) return run_bench_command(out_dir, responder);
+        if (*bench) return run_bench_command(out_dir);
     } catch (const CLI::Error& error) {
         return app.exit(error);
     }

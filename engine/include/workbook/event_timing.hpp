@@ -7,8 +7,11 @@
 /// sub-interval tau, x(tau) = x + v tau + k g tau^2 with k = 1/2 for exact-under-gravity, 1 for
 /// semi-implicit Euler and 0 for explicit Euler. A sphere's height over a plane, and the squared
 /// distance between two spheres that share the same acceleration, are then quadratics in tau,
-/// so the time of impact has a closed form. The one case without it, a movable sphere falling
-/// onto an immovable sphere, is a quartic and is bracketed and bisected instead.
+/// so the time of impact has a closed form. So is the height over a plane of a box that does
+/// not spin: its lowest corner moves with its centre. The one case without a closed form, a
+/// movable sphere falling onto an immovable sphere, is a quartic and is bracketed and bisected
+/// instead. Spinning boxes, and boxes against spheres or boxes, are left to the discrete
+/// back-stop.
 
 #include <optional>
 
@@ -20,9 +23,9 @@ namespace workbook {
 /// k in x(tau) = x + v tau + k g tau^2 for `integrator` (see the file comment).
 double gravity_position_factor(Integrator integrator);
 
-/// The earliest tau in [0, limit] at which `a` and `b` (sphere-sphere or sphere-plane, in
-/// either order) come into contact while approaching, or nothing. Pairs that already
-/// overlap by more than rounding are left to the discrete back-stop.
+/// The earliest tau in [0, limit] at which `a` and `b` (sphere-sphere, sphere-plane, or a box
+/// that does not spin and a plane, in either order) come into contact while approaching, or
+/// nothing. Pairs that already overlap by more than rounding are left to the discrete back-stop.
 std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, const Vector3& gravity, double k,
                                      double limit);
 

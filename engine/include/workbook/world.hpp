@@ -34,8 +34,9 @@ enum class Integrator : std::uint8_t {
 enum class ContactTiming : std::uint8_t {
     /// Move every body the whole step, then answer whatever overlaps (the classic loop).
     discrete,
-    /// Advance to the earliest time of impact of a sphere pair or a sphere and a plane (closed
-    /// form under constant gravity), answer it there, and continue with the rest of the step.
+    /// Advance to the earliest time of impact of a sphere pair, or of a plane and a sphere or a
+    /// box that does not spin (closed form under constant gravity), answer it there, and
+    /// continue with the rest of the step.
     event,
 };
 
