@@ -22,11 +22,12 @@ import tempfile
 from pathlib import Path
 
 import families
+import figure_render
 import spin
 
 PLOTS = Path(__file__).resolve().parent
 SOURCE = PLOTS.parent
-STYLE = PLOTS / "style.gp"
+STYLE = figure_render.STYLE
 
 # (CSV column, key title, line style in style.gp, always drawn?)
 ENERGY = [("total", "total", 1, True), ("kinetic_linear", "kinetic, linear", 2, True),
@@ -45,15 +46,9 @@ LOSS_LAW["angular-impulse"] = "½ (1 − e) Σ Jᵢ uᵢ"  # u_i < 0: each pushi
 DEPTH_PANEL = {"projection"}
 DEPTH = ("penetration_max", "deepest penetration", 41)
 
-FORMATS = ["svg", "pdf", "png"]
+FORMATS = figure_render.FORMATS
 
-# After each panel's plot, gnuplot prints where the panel's plot area lies on the canvas and
-# the range of its horizontal axis. From the SVG's lines figures.py writes <stem>.panels.json,
-# which the site's motion player reads to move a cursor across the chapter's own figure in
-# step with the scene (plots/motion-player.js).
-RECORD_PANEL = ('print sprintf("%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", GPVAL_TERM_XMIN, '
-                'GPVAL_TERM_XMAX, GPVAL_TERM_YMIN, GPVAL_TERM_YMAX, GPVAL_X_MIN, GPVAL_X_MAX, GPVAL_TERM_XSIZE, '
-                'GPVAL_TERM_YSIZE, GPVAL_TERM_SCALE)')
+RECORD_PANEL = figure_render.RECORD_PANEL
 
 
 def read_csv(path):
@@ -149,8 +144,7 @@ def tick_step(span, ticks=5):
     return next(m * power for m in (1, 2, 2.5, 5, 10) if m * power >= raw * 0.999)
 
 
-def quote(text):
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+quote = figure_render.quote
 
 
 def number(value, unit):
@@ -313,29 +307,7 @@ def run_sweep(simulator, scene, fractions, out_dir, stem):
     return runs
 
 
-def render(body, out_dir, stem, what, x_per_second=1.0):
-    """Draws `body` as stem.svg, .pdf and .png, and writes stem.panels.json: where each
-    panel's plot area lies in the SVG (pixels from its top left corner) and the range of its
-    horizontal axis, which is x_per_second times the time."""
-    with tempfile.TemporaryDirectory() as scratch:
-        script = []
-        for ext in FORMATS:
-            script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
-                       f"set output {quote(str(out_dir / (stem + '.' + ext)))}",
-                       f"set print {quote(str(Path(scratch, ext + '.panels')))}", body, "unset output", "unset print"]
-        result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
-        if result.returncode != 0 or result.stderr.strip():
-            raise RuntimeError(f"gnuplot on {what}:\n{result.stderr.strip()}")
-        panels, width, height = [], None, None
-        for line in Path(scratch, "svg.panels").read_text().split("\n"):
-            if not line.strip():
-                continue
-            left, right, low, high, x0, x1, xsize, ysize, scale = (float(v) for v in line.split())
-            width, height = xsize / scale, ysize / scale
-            panels.append({"left": left, "right": right, "top": height - high, "bottom": height - low, "x0": x0, "x1": x1})
-    (out_dir / (stem + ".panels.json")).write_text(json.dumps(
-        {"figure": stem + ".svg", "width": width, "height": height, "x_per_second": x_per_second, "panels": panels},
-        indent=1) + "\n")
+render = figure_render.render
 
 
 def draw_sweep(scene, out_dir, stem, reference_sim, student_sim):

@@ -13,18 +13,15 @@ A scene gets this figure instead of the energy and momentum panels when nothing 
 
 import csv
 import math
-import subprocess
 from pathlib import Path
 
-PLOTS = Path(__file__).resolve().parent
-STYLE = PLOTS / "style.gp"
-FORMATS = ["svg", "pdf", "png"]
+import figure_render
+
 AXES = "xyz"
 RANKS = ["smallest", "middle", "largest"]
 
 
-def quote(text):
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+quote = figure_render.quote
 
 
 def watched_body(description):
@@ -167,7 +164,7 @@ def gnuplot_body(title, description, body, runs, csv_path, header):
                         + (f" title {quote(name)}" if name else " notitle"))
     if overlay:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g += ["plot " + ", \\\n     ".join(plot), "unset label"]
+    g += ["plot " + ", \\\n     ".join(plot), figure_render.RECORD_PANEL, "unset label"]
 
     # Right: what stays constant, each on its own axis, with its largest relative change
     # written in the free space below the two lines.
@@ -188,7 +185,7 @@ def gnuplot_body(title, description, body, runs, csv_path, header):
                     + (" title '|L| (right)'" if n == 0 else " notitle"))
     if overlay:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
-    g += ["plot " + ", \\\n     ".join(plot), "unset multiplot"]
+    g += ["plot " + ", \\\n     ".join(plot), figure_render.RECORD_PANEL, "unset multiplot"]
     return "\n".join(g)
 
 
@@ -200,10 +197,4 @@ def draw(scene, description, body, runs, out_dir, stem):
     header = write_csv(csv_path, series)
     title = description.get("title", scene.stem) + ("" if runs[0][0] == "reference" else " (your code)")
     body_text = gnuplot_body(title, description, body, series, csv_path, header)
-    script = []
-    for ext in FORMATS:
-        script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
-                   f"set output {quote(str(Path(out_dir, stem + '.' + ext)))}", body_text, "unset output"]
-    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
-    if result.returncode != 0 or result.stderr.strip():
-        raise RuntimeError(f"gnuplot on {scene.name}:\n{result.stderr.strip()}")
+    figure_render.render(body_text, Path(out_dir), stem, scene.name)
