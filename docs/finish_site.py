@@ -61,6 +61,8 @@ def nav_html(number, previous, following):
         if target is None:
             return f'<span class="{cls}"></span>'
         (n, file, title) = target
+        # Chapter pages are titled "Chapter N · Title"; the label is not said twice.
+        title = re.sub(rf"^Chapter {n}\s*·\s*", "", title)
         return f'<a class="{cls}" href="{file}">{label} {n} · {html.escape(title)}</a>'
 
     return (f'{NAV_MARK}<nav class="chapter-nav" aria-label="chapters">'

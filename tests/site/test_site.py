@@ -195,6 +195,16 @@ class ChapterNavigation(unittest.TestCase):
             middle = (folder / "chapter_projection.html").read_text()
             self.assertIn('href="chapter_inelastic.html">← Chapter 1 · Chapter 1 title</a>', middle)
             self.assertIn('href="chapter_linear_impulse.html">Chapter 3 · Chapter 3 title</a>', middle)
+            # A page titled "Chapter N · Title", as every chapter page is, is not labelled twice.
+            (folder / finish_site.page_file("linear-impulse")).write_text(
+                '<div class="title">Chapter 3 · Bounces</div><div class="contents"><div class="textblock">text'
+                '</div></div><!-- contents -->')
+            (folder / "chapter_projection.html").write_text(
+                '<div class="title">Chapter 2 · Middle</div><div class="contents"><div class="textblock">text'
+                '</div></div><!-- contents -->')
+            finish_site.add_navigation(folder, chapters)
+            self.assertIn('href="chapter_linear_impulse.html">Chapter 3 · Bounces</a>',
+                          (folder / "chapter_projection.html").read_text())
             self.assertLess(middle.index("chapter-nav"), middle.index("</div></div><!-- contents -->"))
             first = (folder / "chapter_inelastic.html").read_text()
             self.assertNotIn("chapter-prev\" href", first)
