@@ -48,20 +48,6 @@ std::optional<double> first_touch_spheres(const Vector3& a1, const Vector3& a0, 
     return s < 1.0 ? std::optional<double>(s) : std::nullopt;
 }
 
-/// first_touch_spheres()'s two cheap tests, the approach its own and the discriminant's with
-/// room for rounding: never false when it would find a touch, and no square root.
-bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, const Vector3& b1, const Vector3& b0, double rb) {
-    const Vector3 d = a0 - b0;
-    const Vector3 u = (a1 - a0) - (b1 - b0);
-    const double approach = dot(d, u);
-    if (!(approach < 0.0)) return false;
-    // The line of relative motion passes within ra + rb: |d|^2 |u|^2 - (d.u)^2 <= R^2 |u|^2.
-    const double radii = ra + rb;
-    const double uu = length_squared(u);
-    const double far = length_squared(d) * uu;
-    return far - approach * approach <= radii * radii * uu + 1e-9 * far;
-}
-
 /// The touch of fast sphere `a` (start a0) with body `b` (start b0), or nothing.
 std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const RigidBody& b, const Vector3& b0) {
     if (b.shape.kind == ShapeKind::plane)
@@ -96,11 +82,13 @@ void sweep_fast_spheres(World& world) {
     const bool use_grid = world.used_broad_phase_ && world.broad_phase_.has_grid() && set.swept;
 
     // Each body's start, kept while bodies are moved back: a body moved back did start there.
+    // The grid's gathering found them already.
+    std::vector<Vector3>& starts = set.starts;
     if (!use_grid) {
         const double dt = settings.time_step;
         const Vector3 gravity_term = settings.gravity * ((1.0 - gravity_position_factor(settings.integrator)) * dt * dt);
-        scratch.starts.resize(count);
-        for (std::uint32_t j = 0; j < count; ++j) scratch.starts[j] = start_of_step(bodies[j], dt, gravity_term);
+        starts.resize(count);
+        for (std::uint32_t j = 0; j < count; ++j) starts[j] = start_of_step(bodies[j], dt, gravity_term);
     }
     double smallest_radius = std::numeric_limits<double>::infinity();
     if (use_grid) {
@@ -123,7 +111,7 @@ void sweep_fast_spheres(World& world) {
     }
 
     for (std::uint32_t i = 0; i < count; ++i) {
-        const Vector3 fast_start = scratch.starts[i];
+        const Vector3 fast_start = starts[i];
         EarliestTouch touch{1.0, count};
         if (use_grid) {
             const GridProxy& p = set.proxies[i];
@@ -133,7 +121,12 @@ void sweep_fast_spheres(World& world) {
             // Ends from the proxies: the same numbers as the bodies' positions (a body moved back
             // has its proxy moved with it), read from contiguous memory.
             const Vector3 end{p.x, p.y, p.z};
-            for (std::uint32_t j : partners) {
+            for (const std::uint32_t entry : partners) {
+                // Partners that could not touch as the grid saw them are tried again only if they
+                // have been moved back since (see BroadPhase::sweep_partners()).
+                const std::uint32_t j = entry & BroadPhase::partner_index;
+                const bool moved = scratch.is_moved[j] != 0;
+                if (!(entry & BroadPhase::partner_may_touch) && !moved) continue;
                 const GridProxy& q = set.proxies[j];
                 if (q.plane) {
                     const PlaneProxy& plane = *std::ranges::lower_bound(set.planes, j, {}, &PlaneProxy::index);
@@ -141,8 +134,8 @@ void sweep_fast_spheres(World& world) {
                     continue;
                 }
                 const Vector3 other_end{q.x, q.y, q.z};
-                const Vector3& other_start = scratch.starts[j];
-                if (spheres_may_touch(end, fast_start, p.radius, other_end, other_start, q.radius))
+                const Vector3& other_start = starts[j];
+                if (!moved || spheres_may_touch(end, fast_start, p.radius, other_end, other_start, q.radius))
                     touch.offer(first_touch_spheres(end, fast_start, p.radius, other_end, other_start, q.radius), j);
             }
         } else {
@@ -150,7 +143,7 @@ void sweep_fast_spheres(World& world) {
             if (body.is_immovable() || body.shape.kind != ShapeKind::sphere) continue;
             if (!(length(body.position - fast_start) > smallest_radius)) continue;
             for (std::uint32_t j = 0; j < count; ++j)
-                if (j != i) touch.offer(first_touch(body, fast_start, bodies[j], scratch.starts[j]), j);
+                if (j != i) touch.offer(first_touch(body, fast_start, bodies[j], starts[j]), j);
         }
         if (touch.partner == count) continue;
 
@@ -161,7 +154,7 @@ void sweep_fast_spheres(World& world) {
         RigidBody& fast = bodies[i];
         const double earliest = touch.fraction;
         const RigidBody& other = bodies[touch.partner];
-        const Vector3 other_start = scratch.starts[touch.partner];
+        const Vector3 other_start = starts[touch.partner];
         fast.position = fast_start + (fast.position - fast_start) * earliest;
         if (use_grid) {
             GridProxy& p = set.proxies[i];

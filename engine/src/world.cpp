@@ -100,7 +100,7 @@ double World::integrate_bodies(bool gather, bool swept) {
     const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
     if (gather) {
         proxies_.clear(count);
-        if (swept) sweep_scratch_.starts.resize(count);
+        if (swept) proxies_.starts.resize(count);
     }
     double smallest_radius = std::numeric_limits<double>::infinity();
     double sum = 0.0;
@@ -128,7 +128,7 @@ double World::integrate_bodies(bool gather, bool swept) {
         double travel = 0.0;
         if (swept) {
             const Vector3 start = start_of_step(body, dt, gravity_term);
-            sweep_scratch_.starts[i] = start;
+            proxies_.starts[i] = start;
             if (body.shape.kind == ShapeKind::sphere) {
                 travel = length(body.position - start);
                 smallest_radius = std::min(smallest_radius, body.shape.radius);

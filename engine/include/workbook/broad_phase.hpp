@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "workbook/rigid_body.hpp"
+#include "workbook/swept_spheres.hpp"
 #include "workbook/vector3.hpp"
 
 namespace workbook {
@@ -52,6 +53,7 @@ struct PlaneProxy {
 struct ProxySet {
     std::vector<GridProxy> proxies;   ///< every body, in body order
     std::vector<PlaneProxy> planes;   ///< the planes again, in body order, with their normals
+    std::vector<Vector3> starts;      ///< with `swept`: where each body started the step, by body index
     /// Also find the pairs the swept test must try: pairs with a fast sphere (travel greater than
     /// `fast_travel`) whose paths may come within touching distance.
     bool swept = false;
@@ -134,12 +136,18 @@ public:
     /// bodies at non-finite positions, and what the world uses for a handful of bodies.
     static void all_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs = false);
 
+    static constexpr std::uint32_t partner_may_touch = std::uint32_t{1} << 31;  ///< see sweep_partners()
+    static constexpr std::uint32_t partner_index = partner_may_touch - 1;      ///< see sweep_partners()
+
     /// True when the last find_pairs() used a grid (false after it fell back to every pair).
     [[nodiscard]] bool has_grid() const { return has_grid_; }
 
     /// After a find_pairs() with a swept set and a grid: the bodies whose path may come within
     /// touching distance of fast sphere `body`'s during the step (a superset; each at most once,
-    /// in no particular order). Spheres and planes only. Empty for a body that is not fast.
+    /// in no particular order), as entries: the index (entry & partner_index), and the flag
+    /// partner_may_touch unless spheres_may_touch() said no for the two paths as gathered (it
+    /// must be asked again if the partner has been moved since). Planes always carry the flag.
+    /// Spheres and planes only. Empty for a body that is not fast.
     [[nodiscard]] std::span<const std::uint32_t> sweep_partners(std::uint32_t body) const {
         if (body + 1 >= sweep_start_.size()) return {};
         return std::span<const std::uint32_t>(sweep_partners_).subspan(sweep_start_[body],
@@ -157,11 +165,12 @@ private:
     void finish(const ProxySet& set, std::vector<BodyPair>& pairs);
 
     std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
+    std::vector<Vector3> by_cell_start_;      ///< with a swept set, their starts, in the same order
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
     std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
     std::vector<std::uint64_t> contact_keys_; ///< first << 32 | second, before sorting
-    std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner) for the swept test, any order
+    std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner entry) for the swept test, any order
     std::vector<std::uint32_t> sweep_start_;  ///< per body, into sweep_partners_
     std::vector<std::uint32_t> sweep_partners_;
     ProxySet scratch_set_;                    ///< for the find_pairs() that gathers itself

@@ -22,9 +22,35 @@ inline Vector3 start_of_step(const RigidBody& body, double dt, const Vector3& gr
     return body.position - body.velocity * dt + gravity_term;
 }
 
+/// Whether two spheres' straight paths over the step (starts a0, b0, ends a1, b1, radii ra, rb)
+/// may touch as sweep_fast_spheres() counts a touch: never false when it would find one, and
+/// cheap (no square root, no division). With d = a0 - b0 and u the relative travel, the
+/// distance |d + s u| is least at s* = -d.u / u.u; a touch there needs the pair to approach
+/// (d.u < 0, the swept test's own comparison on the same numbers), the line of relative motion
+/// to pass within R = ra + rb (|d|^2 |u|^2 - (d.u)^2 <= R^2 |u|^2), and the pair to be apart at
+/// the end (the test leaves overlaps at the end to detection), which, with both roots of
+/// |d + s u| = R before s = 1, puts s* before 1 as well. Each comparison has room for rounding.
+/// The same whichever sphere is `a`.
+inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, const Vector3& b1, const Vector3& b0,
+                              double rb) {
+    const Vector3 d = a0 - b0;
+    const Vector3 u = (a1 - a0) - (b1 - b0);
+    const double approach = dot(d, u);
+    if (!(approach < 0.0)) return false;
+    const double radii = ra + rb;
+    const double rr = radii * radii;
+    const double uu = length_squared(u);
+    // s* < 1. A pair that can touch started within R + |u|, so |d.u| <= R |u| + u.u and its
+    // rounding stays far below 1e-9 (2 u.u + R^2) >= 1e-9 (u.u + R |u|).
+    if (-approach > uu + 1e-9 * (2.0 * uu + rr)) return false;
+    // Apart at the end.
+    if (length_squared(a1 - b1) < rr * (1.0 - 1e-9)) return false;
+    const double far = length_squared(d) * uu;
+    return far - approach * approach <= rr * uu + 1e-9 * far;
+}
+
 /// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
 struct SweepScratch {
-    std::vector<Vector3> starts;         ///< where each body started the step, by body index
     std::vector<std::uint32_t> moved;    ///< spheres moved back this step, in index order
     std::vector<std::uint8_t> is_moved;  ///< 1 for a sphere in `moved`, by body index
     std::vector<Contact> found;          ///< touching contacts found this step, in the order found
