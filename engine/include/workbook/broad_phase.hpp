@@ -64,6 +64,8 @@ struct ProxySet {
     double largest_radius = 0.0;      ///< largest bounding radius of a bounded body, m
     double poison = 0.0;              ///< 0 when every centre and radius is finite, NaN otherwise
     std::size_t bounded = 0;          ///< bodies other than planes
+    double travel_sum = 0.0;          ///< sum over spheres of min(travel, 4 radii), m
+    std::size_t spheres = 0;          ///< spheres
 
     /// Starts a new gathering for `count` bodies.
     void clear(std::size_t count) {
@@ -77,6 +79,8 @@ struct ProxySet {
         largest_radius = 0.0;
         poison = 0.0;
         bounded = 0;
+        travel_sum = 0.0;
+        spheres = 0;
     }
 
     /// Appends body `index` (the next one in body order), with the travel of a swept sphere.
@@ -96,6 +100,10 @@ struct ProxySet {
         p.sphere = body.shape.kind == ShapeKind::sphere;
         p.travel = travel;
         ++bounded;
+        if (p.sphere) {
+            ++spheres;
+            travel_sum += std::min(travel, 4.0 * p.radius);  // (NaN counts as 0)
+        }
         // x * 0 is 0 for every finite x and NaN otherwise: one sum says whether all are finite.
         poison += (p.x + p.y + p.z + p.radius) * 0.0;
         low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
@@ -161,6 +169,10 @@ private:
     void collect_pairs(const ProxySet& set, bool immovable_pairs);
     /// Appends the pairs of the bounded proxies with the planes.
     void collect_plane_pairs(const ProxySet& set, bool immovable_pairs);
+    /// The grid cell along `axis` of a bounded proxy's coordinate `x` (as the grid placed it).
+    [[nodiscard]] std::uint64_t axis_cell_of(double x, int axis) const {
+        return std::min(static_cast<std::uint64_t>((x - low_[axis]) * inverse_cell_), cells_[axis] - 1);
+    }
     /// Sorts contact_keys_ into `pairs`, and turns sweep_pairs_ into per-body lists.
     void finish(const ProxySet& set, std::vector<BodyPair>& pairs);
 
@@ -169,6 +181,7 @@ private:
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
     std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
+    std::vector<std::uint32_t> large_;        ///< slots in by_cell_ of the large proxies
     std::vector<std::uint64_t> contact_keys_; ///< first << 32 | second, before sorting
     std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner entry) for the swept test, any order
     std::vector<std::uint32_t> sweep_start_;  ///< per body, into sweep_partners_
@@ -180,6 +193,8 @@ private:
     std::uint64_t cells_[3] = {1, 1, 1};
     double slack_ = 0.0;               ///< absolute room for rounding in the swept reach, m
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
+    double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
+    double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
 };
 
 }  // namespace workbook

@@ -153,6 +153,8 @@ private:
     void guard(const char* stage) const;
     /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
     void add_contact_if_any(std::uint32_t i, std::uint32_t j);
+    /// The same, from proxies_ (gathered this step) for spheres and planes.
+    void add_contact_from_proxies(std::uint32_t i, std::uint32_t j);
     /// detect(); `gathered` when integrate_bodies() has filled proxies_ already (and, for a
     /// swept set, the broad phase also finds the swept test's candidates).
     void find_contacts(bool gathered);
@@ -163,8 +165,9 @@ private:
     [[nodiscard]] bool uses_grid() const;
     /// The guard for a stage that changed only the bodies `changed`.
     void guard_bodies(const char* stage, std::span<const std::uint32_t> changed) const;
-    /// The guard for a stage that changed only the bodies of the contacts.
-    void guard_contacts(const char* stage) const;
+    /// Stages 3 and 4; each returns 0 when the bodies it changed are finite, NaN otherwise.
+    double respond_contacts();
+    double correct_contacts();
     /// Fills proxies_ from the bodies as they stand (no swept test).
     void gather_proxies();
 
