@@ -23,6 +23,12 @@ void BroadPhase::all_pairs(std::span<const RigidBody> bodies, std::vector<BodyPa
             if (immovable_pairs || !(bodies[i].is_immovable() && bodies[j].is_immovable())) pairs.push_back({i, j});
 }
 
+void BroadPhase::find_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs) {
+    scratch_set_.clear(bodies.size());
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) scratch_set_.add(bodies[i], i);
+    find_pairs(scratch_set_, pairs, immovable_pairs);
+}
+
 namespace {
 
 /// Cells per axis for an extent, at least one; saturates instead of overflowing.
@@ -31,46 +37,91 @@ std::uint64_t cells_along(double extent, double cell) {
     return n < 1e15 ? static_cast<std::uint64_t>(n) + 1 : std::uint64_t{1} << 50;
 }
 
+/// Resizes `v` to `n`, growing its capacity geometrically: the sizes here change from step to
+/// step, and an exact fit would allocate again at every new largest size.
+template <class T>
+void resize_with_room(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() < n) v.reserve(std::max(n, 2 * v.capacity()));
+    v.resize(n);
+}
+
+constexpr std::uint32_t not_in_grid = std::numeric_limits<std::uint32_t>::max();
+
+/// A sphere the swept test traces: movable, and moved further than the smallest radius.
+bool is_fast(const ProxySet& set, const GridProxy& p) {
+    return set.swept && p.movable && p.sphere && p.travel > set.fast_travel;
+}
+
+/// The proxy with its fast flag set, as the grid keeps it.
+GridProxy with_fast_flag(const ProxySet& set, GridProxy p) {
+    p.fast = is_fast(set, p);
+    return p;
+}
+
 }  // namespace
 
-void BroadPhase::find_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs) {
+void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, bool immovable_pairs) {
     pairs.clear();
-    proxies_.clear();
-    unbounded_.clear();
-    plane_normals_.clear();
-    double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity()};
-    double hi[3] = {-lo[0], -lo[1], -lo[2]};
-    double largest = 0.0;
-    bool finite = true;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    for (std::uint32_t i = 0; i < count; ++i) {
-        const RigidBody& body = bodies[i];
-        if (body.shape.kind == ShapeKind::plane) {
-            unbounded_.push_back(i);
-            plane_normals_.push_back(rotate(body.orientation, body.shape.normal));
-            continue;
-        }
-        const Proxy p{body.position.x, body.position.y, body.position.z, bounding_radius(body), i, !body.is_immovable()};
-        finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.radius);
-        lo[0] = std::min(lo[0], p.x), hi[0] = std::max(hi[0], p.x);
-        lo[1] = std::min(lo[1], p.y), hi[1] = std::max(hi[1], p.y);
-        lo[2] = std::min(lo[2], p.z), hi[2] = std::max(hi[2], p.z);
-        largest = std::max(largest, p.radius);
-        proxies_.push_back(p);
+    contact_keys_.clear();
+    sweep_pairs_.clear();
+    // Room for one pair per body from the start (a resting pile has about one, the gas of
+    // bench/ a few hundredths): the counts change from step to step, and growing only when a
+    // new largest count comes would allocate now and then long after the scene warmed up.
+    const std::size_t count = set.proxies.size();
+    if (contact_keys_.capacity() < count) contact_keys_.reserve(count);
+    if (pairs.capacity() < count) pairs.reserve(count);
+    if (set.swept && sweep_pairs_.capacity() < 2 * count) {
+        sweep_pairs_.reserve(2 * count);
+        sweep_partners_.reserve(2 * count);
     }
-    // A body at NaN or infinity has no cell; testing every pair keeps the answer (no
-    // contact with it) exactly what it would have been.
-    if (!finite) {
-        all_pairs(bodies, pairs, immovable_pairs);
+    has_grid_ = build_grid(set);
+    if (!has_grid_) {
+        // A body at NaN or infinity has no cell; testing every pair keeps the answer (no
+        // contact with it) exactly what it would have been.
+        for (std::uint32_t i = 0; i < count; ++i)
+            for (std::uint32_t j = i + 1; j < count; ++j)
+                if (immovable_pairs || set.proxies[i].movable || set.proxies[j].movable) pairs.push_back({i, j});
+        sweep_start_.clear();
         return;
     }
+    collect_pairs(set, immovable_pairs);
+    finish(set, pairs);
+}
 
-    // Cells at least one largest diameter wide, so that two overlapping bodies sit in the
-    // same or neighbouring cells; coarser when the bodies are spread out, so that the grid
-    // never has more than about two cells per body (memory stays linear in N).
-    const std::size_t budget = 2 * proxies_.size() + 8;
-    double cell = std::max(2.0 * largest, std::numeric_limits<double>::min()) * (1.0 + 1e-9);
+bool BroadPhase::build_grid(const ProxySet& set) {
+    if (!(set.poison == 0.0)) return false;
+    const double lo[3] = {set.low.x, set.low.y, set.low.z};
+    const double hi[3] = {set.high.x, set.high.y, set.high.z};
+    const double largest = set.largest_radius;
+    const std::size_t bounded = set.bounded;
+    largest_radius_ = largest;
+
+    // The swept test pairs bodies whose ends are within r_1 + t_1 + r_2 + t_2 of each other (t
+    // the travel). Cells sized for the fastest sphere would grow with N (the fastest of a
+    // larger gas is faster: 11.6 m/s of 1,000, 13.8 m/s of 100,000) and fill with pairs to
+    // test, so they are sized for r + 2 t of the mean travel; the spheres that reach further
+    // are "large" and look beyond their neighbouring cells for partners (in the gas 1 in 20).
+    // A sphere that travelled more than four of the largest radii is "wide": kept out of the
+    // grid and tried against every body, as it would widen the search of every large sphere.
+    wide_.clear();
+    const double wide_travel = 4.0 * largest;
+    double small_reach = largest;
+    if (set.swept) {
+        const double mean_travel = set.spheres > 0 ? set.travel_sum / static_cast<double>(set.spheres) : 0.0;
+        small_reach = largest + 2.0 * mean_travel;
+        const double scale = std::max({std::abs(lo[0]), std::abs(lo[1]), std::abs(lo[2]), std::abs(hi[0]),
+                                       std::abs(hi[1]), std::abs(hi[2])});
+        // Travels are lengths of differences of coordinates: a few ulps of them, with room to spare.
+        slack_ = 1e-12 * (scale + largest + wide_travel);
+    }
+    const double reach = 2.0 * small_reach;
+    small_reach_ = small_reach;
+
+    // Cells at least one largest reach wide (with room for rounding), so that two bodies that
+    // may pair sit in the same or neighbouring cells; coarser when the bodies are spread out,
+    // so that the grid never has more than about two cells per body (memory stays linear in N).
+    const std::size_t budget = 2 * bounded + 8;
+    double cell = std::max(reach * (1.0 + 1e-6) + 4.0 * slack_, std::numeric_limits<double>::min());
     std::uint64_t nx = 0, ny = 0, nz = 0;
     for (;;) {
         nx = cells_along(hi[0] - lo[0], cell);
@@ -80,83 +131,241 @@ void BroadPhase::find_pairs(std::span<const RigidBody> bodies, std::vector<BodyP
         cell *= 1.5;
     }
     const double inverse_cell = 1.0 / cell;
+    low_[0] = lo[0], low_[1] = lo[1], low_[2] = lo[2];
+    inverse_cell_ = inverse_cell;
+    cells_[0] = nx, cells_[1] = ny, cells_[2] = nz;
     auto axis_cell = [inverse_cell](double x, double low, std::uint64_t n) {
         return std::min(static_cast<std::uint64_t>((x - low) * inverse_cell), n - 1);
     };
 
-    // Counting sort of the proxies by cell: entries of a cell keep index order.
+    // Counting sort of the bounded proxies by cell.
     const std::size_t cells = nx * ny * nz;
+    if (cell_start_.capacity() < budget + 1) cell_start_.reserve(budget + 1);  // the most cells there can be
     cell_start_.assign(cells + 1, 0);
-    cell_of_.resize(proxies_.size());
-    for (std::size_t k = 0; k < proxies_.size(); ++k) {
-        const Proxy& p = proxies_[k];
+    resize_with_room(cell_of_, set.proxies.size());
+    std::size_t in_grid = 0;
+    for (std::size_t k = 0; k < set.proxies.size(); ++k) {
+        const GridProxy& p = set.proxies[k];
+        if (p.plane) {
+            cell_of_[k] = not_in_grid;
+            continue;
+        }
+        if (set.swept && !(p.travel <= wide_travel)) {  // NaN too
+            cell_of_[k] = not_in_grid;
+            wide_.push_back(p.index);
+            continue;
+        }
         const std::uint64_t c = (axis_cell(p.z, lo[2], nz) * ny + axis_cell(p.y, lo[1], ny)) * nx + axis_cell(p.x, lo[0], nx);
         cell_of_[k] = static_cast<std::uint32_t>(c);
         ++cell_start_[c + 1];
+        ++in_grid;
     }
     for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-    by_cell_.resize(proxies_.size());
-    {
-        // Copies, not indices: the neighbour scans below then read memory in order (at
-        // N = 100,000 the indirection through an index array made find_pairs 1.6 times slower).
-        // cell_start_[c] walks forward while filling; afterwards cell c spans
-        // [cell_start_[c] - size, cell_start_[c]) = [old start of c, start of c + 1).
-        for (std::size_t k = 0; k < proxies_.size(); ++k) by_cell_[cell_start_[cell_of_[k]]++] = proxies_[k];
-        for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
-        cell_start_[0] = 0;
+    resize_with_room(by_cell_, in_grid);
+    if (set.swept) resize_with_room(by_cell_start_, in_grid);
+    // Copies, not indices: the walk below then reads memory in order (at N = 100,000 the
+    // indirection through an index array made the pass 1.6 times slower). cell_start_[c] walks
+    // forward while filling; afterwards cell c spans [old start of c, start of c + 1).
+    large_.clear();
+    largest_reach_ = largest;
+    for (std::size_t k = 0; k < set.proxies.size(); ++k) {
+        if (cell_of_[k] == not_in_grid) continue;
+        const std::uint32_t slot = cell_start_[cell_of_[k]]++;
+        const GridProxy& p = set.proxies[k];
+        by_cell_[slot] = with_fast_flag(set, p);
+        if (!set.swept) continue;
+        by_cell_start_[slot] = set.starts[k];
+        const double own_reach = p.radius + p.travel;
+        largest_reach_ = std::max(largest_reach_, own_reach);
+        if (own_reach > small_reach) large_.push_back(slot);
     }
+    for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
+    cell_start_[0] = 0;
+    return true;
+}
 
-    // Every body in index order: its partners of larger index, sorted, so that the pairs
-    // come out in the order testing all pairs would visit them.
-    std::size_t next_proxy = 0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        candidates_.clear();
-        const bool i_movable = !bodies[i].is_immovable();
-        if (bodies[i].shape.kind == ShapeKind::plane) {
-            // A plane is unbounded: every later body may touch it.
-            for (std::uint32_t j = i + 1; j < count; ++j)
-                if (immovable_pairs || i_movable || !bodies[j].is_immovable()) pairs.push_back({i, j});
-            continue;
+void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
+    const double slack = slack_;
+    // The pair's tests: bounding spheres overlap (for the narrow phase), and, for the swept
+    // test, paths may meet (a sphere's path lies within its travel of its end). The travel is 0
+    // for every body the swept test leaves alone, so the wider reach holds both, and most
+    // pairs stop at the first comparison.
+    auto pair = [&](const GridProxy& p, const Vector3* p_start, const GridProxy& q, const Vector3* q_start) {
+        const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        const double radii = p.radius + q.radius;
+        const double reach = (radii + p.travel + q.travel) * (1.0 + 1e-9) + slack;
+        if (d2 > reach * reach) return;
+        // Conservative by a relative 1e-9, so rounding here never drops a pair the narrow
+        // phase would keep.
+        if (d2 <= radii * radii * (1.0 + 1e-9) && (immovable_pairs || p.movable || q.movable)) {
+            const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
+            contact_keys_.push_back(a << 32 | b);
         }
-        const std::size_t k = next_proxy++;
-        const Proxy& p = proxies_[k];
-        const std::uint64_t cx = axis_cell(p.x, lo[0], nx), cy = axis_cell(p.y, lo[1], ny), cz = axis_cell(p.z, lo[2], nz);
-        for (std::uint64_t z = cz > 0 ? cz - 1 : 0; z <= std::min(cz + 1, nz - 1); ++z) {
-            for (std::uint64_t y = cy > 0 ? cy - 1 : 0; y <= std::min(cy + 1, ny - 1); ++y) {
-                const std::uint64_t row = (z * ny + y) * nx;
-                const std::uint64_t first = row + (cx > 0 ? cx - 1 : 0);
-                const std::uint64_t last = row + std::min(cx + 1, nx - 1);
-                // The cells of one row are contiguous in by_cell_: one range, no per-cell loop.
-                for (std::uint32_t s = cell_start_[first]; s < cell_start_[last + 1]; ++s) {
-                    const Proxy& q = by_cell_[s];
-                    if (q.index <= i) continue;
-                    if (!immovable_pairs && !p.movable && !q.movable) continue;
-                    const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-                    const double reach = p.radius + q.radius;
-                    // Conservative by a relative 1e-9, so rounding here never drops a pair
-                    // the narrow phase would keep.
-                    if (dx * dx + dy * dy + dz * dz <= reach * reach * (1.0 + 1e-9)) candidates_.push_back(q.index);
+        if (p.sphere && q.sphere && (p.fast || q.fast)) {
+            // Asked here, while both are at hand, rather than by the swept test from scattered memory.
+            const bool may = spheres_may_touch({p.x, p.y, p.z}, *p_start, p.radius, {q.x, q.y, q.z}, *q_start, q.radius);
+            const std::uint32_t flag = may ? partner_may_touch : 0;
+            if (p.fast) sweep_pairs_.push_back({p.index, q.index | flag});
+            if (q.fast) sweep_pairs_.push_back({q.index, p.index | flag});
+        }
+    };
+    const bool swept = set.swept;
+    auto start_of_slot = [&](std::uint32_t slot) { return swept ? &by_cell_start_[slot] : nullptr; };
+    auto start_of_body = [&](std::uint32_t body) { return swept ? &set.starts[body] : nullptr; };
+
+    // Each cell against itself and the neighbours after it: in its own row the next cell, in
+    // the next row the three below it, in the next layer the nine behind it. The cells of a
+    // row are contiguous in by_cell_, so each of those is one range.
+    const std::uint64_t nx = cells_[0], ny = cells_[1], nz = cells_[2];
+    const std::uint32_t* start = cell_start_.data();
+    const GridProxy* proxies = by_cell_.data();
+    for (std::uint64_t z = 0; z < nz; ++z) {
+        for (std::uint64_t y = 0; y < ny; ++y) {
+            const std::uint64_t row = (z * ny + y) * nx;
+            if (start[row] == start[row + nx]) continue;  // an empty row
+            for (std::uint64_t x = 0; x < nx; ++x) {
+                const std::uint32_t begin = start[row + x], end = start[row + x + 1];
+                if (begin == end) continue;
+                const std::uint64_t x0 = x > 0 ? x - 1 : 0, x1 = std::min(x + 1, nx - 1);
+                std::uint32_t ranges[4][2];
+                int count = 0;
+                if (y + 1 < ny) {
+                    const std::uint64_t next = row + nx;
+                    ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
+                }
+                if (z + 1 < nz) {
+                    for (std::uint64_t yy = y > 0 ? y - 1 : 0; yy <= std::min(y + 1, ny - 1); ++yy) {
+                        const std::uint64_t next = ((z + 1) * ny + yy) * nx;
+                        ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
+                    }
+                }
+                const std::uint32_t own_end = start[row + x1 + 1];
+                for (std::uint32_t s = begin; s < end; ++s) {
+                    const GridProxy& p = proxies[s];
+                    const Vector3* p_start = start_of_slot(s);
+                    for (std::uint32_t t = s + 1; t < own_end; ++t) pair(p, p_start, proxies[t], start_of_slot(t));
+                    for (int r = 0; r < count; ++r)
+                        for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) pair(p, p_start, proxies[t], start_of_slot(t));
                 }
             }
         }
-        for (std::size_t u = 0; u < unbounded_.size(); ++u) {
-            const std::uint32_t j = unbounded_[u];
-            if (j < i || (!immovable_pairs && !i_movable && bodies[j].is_immovable())) continue;
-            // The height of the centre above the plane, as the narrow phase computes it; a
-            // relative 1e-9 of slack keeps the test conservative.
-            const Vector3 offset{p.x - bodies[j].position.x, p.y - bodies[j].position.y, p.z - bodies[j].position.z};
-            const double height = dot(offset, plane_normals_[u]);
-            if (height < p.radius + 1e-9 * (p.radius + std::abs(height))) candidates_.push_back(j);
-        }
-        // Usually a handful: insertion sort beats std::sort's set-up here.
-        for (std::size_t a = 1; a < candidates_.size(); ++a) {
-            const std::uint32_t value = candidates_[a];
-            std::size_t b = a;
-            for (; b > 0 && candidates_[b - 1] > value; --b) candidates_[b] = candidates_[b - 1];
-            candidates_[b] = value;
-        }
-        for (std::uint32_t j : candidates_) pairs.push_back({i, j});
     }
+
+    auto is_large = [this](const GridProxy& q) { return q.radius + q.travel > small_reach_; };
+    // Large spheres against the cells beyond their neighbours, as far as a partner may be
+    // (pairs of two large ones once: from the one of smaller index).
+    for (const std::uint32_t s : large_) {
+        const GridProxy& p = proxies[s];
+        const Vector3* p_start = start_of_slot(s);
+        const double far = ((p.radius + p.travel + largest_reach_) * (1.0 + 1e-9) + slack) * inverse_cell_ * (1.0 + 1e-9);
+        const std::uint64_t k = far < 1e15 ? static_cast<std::uint64_t>(far) + 1 : std::uint64_t{1} << 50;
+        const std::uint64_t cx = axis_cell_of(p.x, 0), cy = axis_cell_of(p.y, 1), cz = axis_cell_of(p.z, 2);
+        auto low_end = [k](std::uint64_t c) { return c > k ? c - k : 0; };
+        const std::uint64_t x0 = low_end(cx), x1 = std::min(cx + k, nx - 1);
+        for (std::uint64_t z = low_end(cz); z <= std::min(cz + k, nz - 1); ++z) {
+            for (std::uint64_t y = low_end(cy); y <= std::min(cy + k, ny - 1); ++y) {
+                const std::uint64_t row = (z * ny + y) * nx;
+                auto scan = [&](std::uint64_t from, std::uint64_t to) {  // cells [from, to] of the row
+                    for (std::uint32_t t = start[row + from]; t < start[row + to + 1]; ++t)
+                        if (!(proxies[t].index < p.index && is_large(proxies[t]))) pair(p, p_start, proxies[t], start_of_slot(t));
+                };
+                const bool near = (z + 1 >= cz && z <= cz + 1) && (y + 1 >= cy && y <= cy + 1);
+                if (!near) {
+                    scan(x0, x1);
+                    continue;
+                }
+                // The neighbouring cells were walked above.
+                if (cx >= x0 + 2) scan(x0, cx - 2);
+                if (cx + 2 <= x1) scan(cx + 2, x1);
+            }
+        }
+    }
+
+    // Wide spheres against every other bounded body (wide pairs once).
+    for (std::uint32_t w : wide_) {
+        const GridProxy p = with_fast_flag(set, set.proxies[w]);
+        for (const GridProxy& other : set.proxies) {
+            if (other.plane || other.index == w) continue;
+            if (cell_of_[other.index] == not_in_grid && other.index < w) continue;  // met from the other's side
+            pair(p, start_of_body(w), with_fast_flag(set, other), start_of_body(other.index));
+        }
+    }
+    collect_plane_pairs(set, immovable_pairs);
+}
+
+void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) {
+    auto test = [&](const GridProxy& p, const PlaneProxy& u) {
+        // The height of the centre above the plane, as the narrow phase computes it.
+        const Vector3 offset{p.x - u.point.x, p.y - u.point.y, p.z - u.point.z};
+        const double height = dot(offset, u.normal);
+        // A relative 1e-9 of slack keeps the test conservative.
+        if ((immovable_pairs || p.movable || u.movable) && height < p.radius + 1e-9 * (p.radius + std::abs(height))) {
+            const std::uint64_t a = std::min(p.index, u.index), b = std::max(p.index, u.index);
+            contact_keys_.push_back(a << 32 | b);
+        }
+        // The swept test's own condition for a plane (swept_spheres.cpp): the centre ended
+        // behind it. Written as its negation so that a NaN is kept, as it is there.
+        if (p.fast && !((height - p.radius) + p.radius >= 0.0)) sweep_pairs_.push_back({p.index, u.index | partner_may_touch});
+    };
+    const std::uint64_t nx = cells_[0], ny = cells_[1], nz = cells_[2];
+    const double cell = 1.0 / inverse_cell_;
+    for (const PlaneProxy& u : set.planes) {
+        for (std::uint32_t w : wide_) test(with_fast_flag(set, set.proxies[w]), u);
+        // Only the cells that come near the plane: along a row of cells the height of a cell's
+        // centre grows by n_x * cell from one cell to the next, and no point of a cell lies lower
+        // than its centre's height minus (|n_x| + |n_y| + |n_z|) cell / 2. A cell whose lowest
+        // point is above every radius (with a cell to spare for rounding) holds no pair.
+        const Vector3 n = u.normal;
+        const double half_spread = 0.5 * cell * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+        const double reach = largest_radius_ + half_spread + cell;
+        for (std::uint64_t z = 0; z < nz; ++z) {
+            for (std::uint64_t y = 0; y < ny; ++y) {
+                const std::uint64_t row = (z * ny + y) * nx;
+                if (cell_start_[row] == cell_start_[row + nx]) continue;
+                // Height of the centre of the row's cell x = 0, then per cell along x.
+                const Vector3 first{low_[0] + 0.5 * cell - u.point.x, low_[1] + (static_cast<double>(y) + 0.5) * cell - u.point.y,
+                                    low_[2] + (static_cast<double>(z) + 0.5) * cell - u.point.z};
+                const double h0 = dot(first, n), step = n.x * cell;
+                std::uint64_t x0 = 0, x1 = nx - 1;
+                // Cells with h0 + step * x <= reach: a ray of x, clamped to the row.
+                if (step > 0.0) {
+                    const double last = (reach - h0) / step;
+                    if (!(last >= 0.0)) continue;
+                    if (last < static_cast<double>(nx - 1)) x1 = static_cast<std::uint64_t>(last);
+                } else if (step < 0.0) {
+                    const double first_x = (reach - h0) / step;
+                    if (first_x > static_cast<double>(nx - 1)) continue;
+                    if (first_x > 0.0) x0 = static_cast<std::uint64_t>(std::ceil(first_x));
+                } else if (!(h0 <= reach)) {
+                    continue;
+                }
+                for (std::uint32_t s = cell_start_[row + x0]; s < cell_start_[row + x1 + 1]; ++s) test(by_cell_[s], u);
+            }
+        }
+    }
+}
+
+void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs) {
+    std::sort(contact_keys_.begin(), contact_keys_.end());
+    resize_with_room(pairs, contact_keys_.size());
+    for (std::size_t k = 0; k < contact_keys_.size(); ++k)
+        pairs[k] = {static_cast<std::uint32_t>(contact_keys_[k] >> 32), static_cast<std::uint32_t>(contact_keys_[k])};
+
+    if (!set.swept) {
+        sweep_start_.clear();
+        return;
+    }
+    // Each fast sphere's partners, as lists by body (a counting sort of the pairs).
+    const std::size_t count = set.proxies.size();
+    resize_with_room(sweep_start_, count + 1);
+    std::fill(sweep_start_.begin(), sweep_start_.end(), 0);
+    for (const BodyPair& p : sweep_pairs_) ++sweep_start_[p.first + 1];
+    for (std::size_t i = 0; i < count; ++i) sweep_start_[i + 1] += sweep_start_[i];
+    resize_with_room(sweep_partners_, sweep_start_[count]);
+    for (const BodyPair& p : sweep_pairs_) sweep_partners_[sweep_start_[p.first]++] = p.second;
+    for (std::size_t i = count; i > 0; --i) sweep_start_[i] = sweep_start_[i - 1];
+    sweep_start_[0] = 0;
 }
 
 }  // namespace workbook

@@ -7,6 +7,36 @@
 
 namespace workbook {
 
+bool spheres_overlap(const Vector3& centre1, double radius1, const Vector3& centre2, double radius2) {
+    const double radii = radius1 + radius2;
+    // Written as "not apart" so that a NaN position still yields a (NaN) contact, as it always
+    // has: a broken state shows in the contacts instead of vanishing from them.
+    return !(length_squared(centre1 - centre2) >= radii * radii);
+}
+
+void write_spheres(const Vector3& centre1, double radius1, const Vector3& centre2, double radius2, Contact& contact) {
+    const Vector3 offset = centre1 - centre2;
+    const double radii = radius1 + radius2;
+    const double distance = std::sqrt(length_squared(offset));
+    contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+    const double overlap = radii - distance;
+    // The point halfway between the two deepest surface points, so neither body is favoured.
+    const Vector3 point = centre2 + contact.normal * (radius2 - overlap / 2.0);
+    contact.add_point(point, overlap);
+}
+
+bool sphere_plane_overlap(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal) {
+    return !(radius - dot(centre - point, normal) <= 0.0);
+}
+
+void write_sphere_plane(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal, Contact& contact) {
+    // Height of the centre above the plane.
+    const double height = dot(centre - point, normal);
+    contact.normal = normal;
+    const Vector3 at = centre - normal * ((radius + height) / 2.0);
+    contact.add_point(at, radius - height);
+}
+
 namespace {
 
 // Each shape pair has one yes/no test and one writer. The writer repeats the test's
@@ -14,21 +44,11 @@ namespace {
 // overlaps() free of any state and the writer callable on its own.
 
 bool spheres_overlap(const RigidBody& sphere1, const RigidBody& sphere2) {
-    const double radii = sphere1.shape.radius + sphere2.shape.radius;
-    // Written as "not apart" so that a NaN position still yields a (NaN) contact, as it always
-    // has: a broken state shows in the contacts instead of vanishing from them.
-    return !(length_squared(sphere1.position - sphere2.position) >= radii * radii);
+    return spheres_overlap(sphere1.position, sphere1.shape.radius, sphere2.position, sphere2.shape.radius);
 }
 
 void write_spheres(const RigidBody& sphere1, const RigidBody& sphere2, Contact& contact) {
-    const Vector3 offset = sphere1.position - sphere2.position;
-    const double radii = sphere1.shape.radius + sphere2.shape.radius;
-    const double distance = std::sqrt(length_squared(offset));
-    contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-    const double overlap = radii - distance;
-    // The point halfway between the two deepest surface points, so neither body is favoured.
-    const Vector3 point = sphere2.position + contact.normal * (sphere2.shape.radius - overlap / 2.0);
-    contact.add_point(point, overlap);
+    write_spheres(sphere1.position, sphere1.shape.radius, sphere2.position, sphere2.shape.radius, contact);
 }
 
 /// Whether a pair with a box can touch at all: its bounding sphere (workbook::bounding_radius)
@@ -43,26 +63,13 @@ bool bounding_spheres_may_touch(const RigidBody& a, const RigidBody& b) {
     return !(length_squared(a.position - b.position) > reach * reach);
 }
 
-/// Height of the sphere's centre above the plane, and the plane's world normal.
-struct PlaneHeight {
-    Vector3 normal;
-    double height;
-};
-
-PlaneHeight height_above(const RigidBody& sphere, const RigidBody& plane) {
-    const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
-    return {normal, dot(sphere.position - plane.position, normal)};
-}
-
 bool sphere_plane_overlap(const RigidBody& sphere, const RigidBody& plane) {
-    return !(sphere.shape.radius - height_above(sphere, plane).height <= 0.0);
+    return sphere_plane_overlap(sphere.position, sphere.shape.radius, plane.position, rotate(plane.orientation, plane.shape.normal));
 }
 
 void write_sphere_plane(const RigidBody& sphere, const RigidBody& plane, Contact& contact) {
-    const auto [normal, height] = height_above(sphere, plane);
-    contact.normal = normal;
-    const Vector3 point = sphere.position - normal * ((sphere.shape.radius + height) / 2.0);
-    contact.add_point(point, sphere.shape.radius - height);
+    write_sphere_plane(sphere.position, sphere.shape.radius, plane.position, rotate(plane.orientation, plane.shape.normal),
+                       contact);
 }
 
 }  // namespace

@@ -7,44 +7,39 @@
 
 #include "workbook/detection.hpp"
 #include "workbook/event_timing.hpp"
+#include "workbook/world.hpp"
 
 namespace workbook {
 
 namespace {
 
-/// Where `body` started this step, undoing what integrate() did: x_end = x0 + v_end dt - c g dt^2
-/// with c = 1 - k (0 for semi-implicit Euler, 1/2 for exact-under-gravity, 1 for explicit Euler).
-Vector3 start_of_step(const RigidBody& body, const WorldSettings& settings) {
-    if (body.is_immovable()) return body.position;
-    const double dt = settings.time_step;
-    const double c = 1.0 - gravity_position_factor(settings.integrator);
-    return body.position - body.velocity * dt + settings.gravity * (c * dt * dt);
+/// The fraction s in [0, 1) of the straight paths at which sphere a (start a0, end a1, radius
+/// ra) first touches plane (point, unit normal), or nothing: only a centre that ended behind
+/// the plane has tunnelled.
+std::optional<double> first_touch_plane(const Vector3& a1, const Vector3& a0, double ra, const Vector3& point,
+                                        const Vector3& normal) {
+    const double h0 = dot(a0 - point, normal) - ra;
+    const double h1 = dot(a1 - point, normal) - ra;
+    // A shallower overlap is an ordinary contact that detection has already found. A sphere
+    // already touching at the start is stopped where it started.
+    if (h0 + ra < 0.0 || h1 + ra >= 0.0) return std::nullopt;
+    return h0 <= 0.0 ? 0.0 : h0 / (h0 - h1);
 }
 
-/// The fraction s in [0, 1) of the straight paths start -> end at which the pair first touches,
-/// or nothing. Pairs that overlapped at the start are not swept.
-std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const RigidBody& b, const Vector3& b0) {
-    if (b.shape.kind == ShapeKind::plane) {
-        const Vector3 normal = rotate(b.orientation, b.shape.normal);
-        const double h0 = dot(a0 - b.position, normal) - a.shape.radius;
-        const double h1 = dot(a.position - b.position, normal) - a.shape.radius;
-        // Only a centre that crossed the plane is tunnelling; a shallower overlap is an ordinary
-        // contact that detection has already found. A sphere already touching at the start is
-        // stopped where it started.
-        if (h0 + a.shape.radius < 0.0 || h1 + a.shape.radius >= 0.0) return std::nullopt;
-        return h0 <= 0.0 ? 0.0 : h0 / (h0 - h1);
-    }
-    if (b.shape.kind != ShapeKind::sphere) return std::nullopt;
+/// The same for two spheres (starts a0, b0, ends a1, b1); pairs that overlapped at the start
+/// are not swept.
+std::optional<double> first_touch_spheres(const Vector3& a1, const Vector3& a0, double ra, const Vector3& b1,
+                                          const Vector3& b0, double rb) {
     const Vector3 d = a0 - b0;
-    const Vector3 u = (a.position - a0) - (b.position - b0);
-    const double radii = a.shape.radius + b.shape.radius;
+    const Vector3 u = (a1 - a0) - (b1 - b0);
+    const double radii = ra + rb;
     const double distance = length(d);
     const double gap = distance - radii;
     const double approach = dot(d, u);
     if (gap < 0.0 || approach >= 0.0) return std::nullopt;
     // A pair that overlaps at the end of the step was found by detection; only a pair that went
     // through each other and out again is tunnelling.
-    if (length(a.position - b.position) < radii) return std::nullopt;
+    if (length(a1 - b1) < radii) return std::nullopt;
     const double uu = length_squared(u);
     const double c = gap * (distance + radii);
     const double discriminant = approach * approach - uu * c;
@@ -53,62 +48,126 @@ std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const R
     return s < 1.0 ? std::optional<double>(s) : std::nullopt;
 }
 
+/// The touch of fast sphere `a` (start a0) with body `b` (start b0), or nothing.
+std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const RigidBody& b, const Vector3& b0) {
+    if (b.shape.kind == ShapeKind::plane)
+        return first_touch_plane(a.position, a0, a.shape.radius, b.position, rotate(b.orientation, b.shape.normal));
+    if (b.shape.kind != ShapeKind::sphere) return std::nullopt;
+    return first_touch_spheres(a.position, a0, a.shape.radius, b.position, b0, b.shape.radius);
+}
+
+/// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
+/// index: what trying every body in index order finds, whatever order the candidates come in.
+struct EarliestTouch {
+    double fraction = 1.0;
+    std::uint32_t partner;
+    void offer(std::optional<double> s, std::uint32_t j) {
+        if (s && (*s < fraction || (*s == fraction && fraction < 1.0 && j < partner))) {
+            fraction = *s;
+            partner = j;
+        }
+    }
+};
+
 }  // namespace
 
 void sweep_fast_spheres(World& world) {
     std::span<RigidBody> bodies = world.bodies_;
-    double smallest_radius = std::numeric_limits<double>::infinity();
-    for (const RigidBody& body : bodies)
-        if (body.shape.kind == ShapeKind::sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
-
+    SweepScratch& scratch = world.sweep_scratch_;
     const auto count = static_cast<std::uint32_t>(bodies.size());
+    const WorldSettings& settings = world.settings_;
+    // With this step's grid, only the partners the broad phase found are tried (same answer as
+    // trying all: BroadPhase::sweep_partners()); without it, every body.
+    ProxySet& set = world.proxies_;
+    const bool use_grid = world.used_broad_phase_ && world.broad_phase_.has_grid() && set.swept;
+
+    // Each body's start, kept while bodies are moved back: a body moved back did start there.
+    // The grid's gathering found them already.
+    std::vector<Vector3>& starts = set.starts;
+    if (!use_grid) {
+        const double dt = settings.time_step;
+        const Vector3 gravity_term = settings.gravity * ((1.0 - gravity_position_factor(settings.integrator)) * dt * dt);
+        starts.resize(count);
+        for (std::uint32_t j = 0; j < count; ++j) starts[j] = start_of_step(bodies[j], dt, gravity_term);
+    }
+    double smallest_radius = std::numeric_limits<double>::infinity();
+    if (use_grid) {
+        smallest_radius = set.fast_travel;
+    } else {
+        for (const RigidBody& body : bodies)
+            if (body.shape.kind == ShapeKind::sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
+    }
+
+    // Bodies moved back, flagged by index, and the touching contacts found on the way, in the
+    // order they were found; both are merged into the contacts at the end (see there).
+    scratch.moved.clear();
+    scratch.found.clear();
+    if (scratch.is_moved.size() < count) {
+        scratch.is_moved.resize(count, 0);
+        // Room for more moves than a step makes (the gas of bench/ moves 0.7% of its spheres a
+        // step), so that a warm step does not allocate when one happens to make a few more.
+        scratch.moved.reserve(count / 32 + 16);
+        scratch.found.reserve(count / 32 + 16);
+        scratch.candidates.reserve(256);
+    }
+
     for (std::uint32_t i = 0; i < count; ++i) {
-        RigidBody& fast = bodies[i];
-        if (fast.is_immovable() || fast.shape.kind != ShapeKind::sphere) continue;
-        const Vector3 fast_start = start_of_step(fast, world.settings_);
-        if (!(length(fast.position - fast_start) > smallest_radius)) continue;
-
-        double earliest = 1.0;
-        std::uint32_t partner = count;
-        for (std::uint32_t j = 0; j < count; ++j) {
-            if (j == i) continue;
-            if (auto s = first_touch(fast, fast_start, bodies[j], start_of_step(bodies[j], world.settings_))) {
-                if (*s < earliest) {
-                    earliest = *s;
-                    partner = j;
+        const Vector3 fast_start = starts[i];
+        EarliestTouch touch{1.0, count};
+        if (use_grid) {
+            const GridProxy& p = set.proxies[i];
+            if (!(p.movable && p.sphere && p.travel > smallest_radius)) continue;
+            const std::span<const std::uint32_t> partners = world.broad_phase_.sweep_partners(i);
+            if (partners.empty()) continue;
+            // Ends from the proxies: the same numbers as the bodies' positions (a body moved back
+            // has its proxy moved with it), read from contiguous memory.
+            const Vector3 end{p.x, p.y, p.z};
+            for (const std::uint32_t entry : partners) {
+                // Partners that could not touch as the grid saw them are tried again only if they
+                // have been moved back since (see BroadPhase::sweep_partners()).
+                const std::uint32_t j = entry & BroadPhase::partner_index;
+                const bool moved = scratch.is_moved[j] != 0;
+                if (!(entry & BroadPhase::partner_may_touch) && !moved) continue;
+                const GridProxy& q = set.proxies[j];
+                if (q.plane) {
+                    const PlaneProxy& plane = *std::ranges::lower_bound(set.planes, j, {}, &PlaneProxy::index);
+                    touch.offer(first_touch_plane(end, fast_start, p.radius, plane.point, plane.normal), j);
+                    continue;
                 }
+                const Vector3 other_end{q.x, q.y, q.z};
+                const Vector3& other_start = starts[j];
+                if (!moved || spheres_may_touch(end, fast_start, p.radius, other_end, other_start, q.radius))
+                    touch.offer(first_touch_spheres(end, fast_start, p.radius, other_end, other_start, q.radius), j);
             }
+        } else {
+            const RigidBody& body = bodies[i];
+            if (body.is_immovable() || body.shape.kind != ShapeKind::sphere) continue;
+            if (!(length(body.position - fast_start) > smallest_radius)) continue;
+            for (std::uint32_t j = 0; j < count; ++j)
+                if (j != i) touch.offer(first_touch(body, fast_start, bodies[j], starts[j]), j);
         }
-        if (partner == count) continue;
+        if (touch.partner == count) continue;
 
-        // The fast sphere goes back to the moment of touching. Its partner keeps its place and
-        // its other contacts (taking those away would let a resting body sink).
-        const RigidBody& other = bodies[partner];
-        const Vector3 other_start = start_of_step(other, world.settings_);
+        // The fast sphere goes back to the moment of touching, and the contacts found for it at
+        // the end of the step give way to the one found on the way. Its partner keeps its place
+        // and its other contacts (taking those away would let a resting body sink); the normal
+        // is taken where both were at that moment.
+        RigidBody& fast = bodies[i];
+        const double earliest = touch.fraction;
+        const RigidBody& other = bodies[touch.partner];
+        const Vector3 other_start = starts[touch.partner];
         fast.position = fast_start + (fast.position - fast_start) * earliest;
-        const Vector3 other_then = other_start + (other.position - other_start) * earliest;
-        // The contacts found for the fast sphere at the end of the step no longer hold; it is
-        // detected again where it now is. In a dense pile that place overlaps other bodies, and
-        // often the partner itself, which has moved on since the moment of touching; leaving
-        // those overlaps out of this step's correction let them grow (to two thirds of a
-        // diameter under 100 g in the stress corpus), and the projection of such overlaps then
-        // pushed neighbours' centres through the walls of a box.
-        std::erase_if(world.contacts_, [i](const Contact& c) { return c.body1 == i || c.body2 == i; });
-        bool partner_overlaps = false;
-        for (std::uint32_t j = 0; j < count; ++j) {
-            if (j == i) continue;
-            auto found = i < j ? collide(fast, i, bodies[j], j) : collide(bodies[j], j, fast, i);
-            if (!found) continue;
-            world.contacts_.push_back(*found);
-            partner_overlaps = partner_overlaps || j == partner;
+        if (use_grid) {
+            GridProxy& p = set.proxies[i];
+            p.x = fast.position.x, p.y = fast.position.y, p.z = fast.position.z;
         }
-        if (partner_overlaps) continue;
-        // Otherwise the pair gets the touching contact of the moment they met, its normal taken
-        // where both were then.
+        const Vector3 other_then = other_start + (other.position - other_start) * earliest;
+        scratch.moved.push_back(i);
+        scratch.is_moved[i] = 1;
         Contact contact;
         const bool plane = other.shape.kind == ShapeKind::plane;
         contact.body1 = i;
-        contact.body2 = partner;
+        contact.body2 = touch.partner;
         if (plane) {
             contact.normal = rotate(other.orientation, other.shape.normal);
         } else {
@@ -117,8 +176,57 @@ void sweep_fast_spheres(World& world) {
             contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
         }
         contact.add_point(fast.position - contact.normal * fast.shape.radius, 0.0);
-        world.contacts_.push_back(contact);  // the pair was not among them: it did not overlap at the end
+        scratch.found.push_back(contact);  // the pair was not among the contacts: it did not overlap at the end
     }
+    if (scratch.moved.empty()) return;
+
+    // The contacts found for a moved sphere at the end of the step no longer hold; it is
+    // detected again where it now is. In a dense pile that place overlaps other bodies, and
+    // often the partner itself, which has moved on since the moment of touching; leaving those
+    // overlaps out of this step's correction let them grow (to two thirds of a diameter under
+    // 100 g in the stress corpus), and the projection of such overlaps then pushed neighbours'
+    // centres through the walls of a box. Only when the partner does not overlap it there does
+    // the pair get the touching contact of the moment they met.
+    //
+    // One pass, as if each move (in index order) had at once removed every contact of the moved
+    // sphere, detected it again against every body where they stood then, and appended its
+    // touching contact: a detected contact stays unless one of its bodies moved; a contact
+    // found for moved sphere i stays unless its other body moved later (at a larger index),
+    // which is then detected again against i in its turn.
+    std::erase_if(world.contacts_, [&](const Contact& c) { return scratch.is_moved[c.body1] || scratch.is_moved[c.body2]; });
+    // With the grid, the bodies that may overlap sphere i where it now is are among its swept
+    // partners (its place is on its path, theirs on theirs), plus the boxes, which the swept
+    // test does not trace; sorted, they are tried in the same order as every body would be.
+    scratch.boxes.clear();
+    if (use_grid)
+        for (std::uint32_t j = 0; j < count; ++j)
+            if (!set.proxies[j].sphere && !set.proxies[j].plane) scratch.boxes.push_back(j);
+    for (std::size_t k = 0; k < scratch.moved.size(); ++k) {
+        const std::uint32_t i = scratch.moved[k];
+        const Contact& touching = scratch.found[k];
+        bool partner_overlaps = false;
+        auto try_body = [&](std::uint32_t j) {
+            if (j == i || (scratch.is_moved[j] && j > i)) return;
+            auto contact = i < j ? collide(bodies[i], i, bodies[j], j) : collide(bodies[j], j, bodies[i], i);
+            if (!contact) return;
+            world.contacts_.push_back(*contact);
+            partner_overlaps = partner_overlaps || j == touching.body2;
+        };
+        if (use_grid) {
+            scratch.candidates.assign(scratch.boxes.begin(), scratch.boxes.end());
+            for (const std::uint32_t entry : world.broad_phase_.sweep_partners(i))
+                scratch.candidates.push_back(entry & BroadPhase::partner_index);
+            std::ranges::sort(scratch.candidates);
+            const auto duplicates = std::ranges::unique(scratch.candidates);
+            scratch.candidates.erase(duplicates.begin(), duplicates.end());
+            for (const std::uint32_t j : scratch.candidates) try_body(j);
+        } else {
+            for (std::uint32_t j = 0; j < count; ++j) try_body(j);
+        }
+        if (!partner_overlaps && !(touching.body2 > i && scratch.is_moved[touching.body2]))
+            world.contacts_.push_back(touching);
+    }
+    for (std::uint32_t i : scratch.moved) scratch.is_moved[i] = 0;
 }
 
 }  // namespace workbook

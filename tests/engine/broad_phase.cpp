@@ -136,3 +136,124 @@ TEST_CASE("bodies spread far apart keep the grid small and the answer right", "[
     CHECK((pairs[0].first == 0 && pairs[0].second == 1));
     CHECK((pairs[1].first == 2 && pairs[1].second == 3));
 }
+
+namespace {
+
+/// Fast small balls in a closed box, most of which travel further than the smallest radius in
+/// a step, so that the swept test runs for most of them; a few pinned balls, and one ball so
+/// fast that it crosses the box in a step (kept out of the grid's cells, tried against all).
+/// With `mixed`, larger balls, most of them slow and one in twenty fast: those travel further
+/// than the cells, which are sized for the mean travel, and look for partners beyond them.
+std::vector<RigidBody> fast_crowd(std::uint64_t seed, bool mixed) {
+    SeededRandom random(seed);
+    std::vector<RigidBody> bodies;
+    const double half = 2.0;
+    for (int i = 0; i < 500; ++i) {
+        if (i == 100) bodies.push_back(make_immovable_plane({0, 1, 0}, {0, -half, 0}));
+        if (i == 300) bodies.push_back(make_immovable_plane({1, 0, 0}, {-half, 0, 0}));
+        const Vector3 at = random.vector(half * 0.95);
+        if (i % 25 == 7) {
+            bodies.push_back(make_immovable_sphere(random.uniform(0.02, 0.08), at));
+            continue;
+        }
+        const double speed = !mixed ? 8.0 : i % 20 == 0 ? 15.0 : 1.0;
+        const double radius = mixed ? random.uniform(0.1, 0.2) : random.uniform(0.02, 0.06);
+        bodies.push_back(make_sphere(random.uniform(0.5, 2.0), radius, at, random.vector(speed)));
+    }
+    bodies.push_back(make_sphere(1.0, 0.03, {0, 0, 0}, {240.0, 35.0, -20.0}));
+    bodies.push_back(make_immovable_plane({-1, 0, 0}, {half, 0, 0}));
+    bodies.push_back(make_immovable_plane({0, 0, 1}, {0, 0, -half}));
+    bodies.push_back(make_immovable_plane({0, 0, -1}, {0, 0, half}));
+    bodies.push_back(make_immovable_plane({0, -1, 0}, {0, half, 0}));
+    return bodies;
+}
+
+}  // namespace
+
+TEST_CASE("the swept test finds with the grid what it finds trying every body, step after step",
+          "[world][broad_phase][swept]") {
+    const std::uint64_t seed = workbook::testing::run_seed();
+    CAPTURE(seed);
+    struct Variant {
+        const char* name;
+        WorldSettings settings;
+        bool mixed;
+    };
+    const Variant variants[] = {
+        {"no gravity", WorldSettings{1.0 / 60.0, {}}, false},
+        {"gravity, exact-under-gravity", WorldSettings{1.0 / 60.0, {0, -9.81, 0}, Integrator::exact_under_gravity}, false},
+        {"mixed speeds", WorldSettings{1.0 / 60.0, {}}, true},
+    };
+    for (const Variant& variant : variants) {
+        CAPTURE(variant.name);
+        const std::vector<RigidBody> bodies = fast_crowd(seed, variant.mixed);
+        World grid(bodies, variant.settings, bouncing);
+        World every_body(bodies, variant.settings, bouncing);
+        every_body.set_shortcuts({.broad_phase = false});
+        std::size_t touches = 0;
+        for (int step = 0; step < 60; ++step) {
+            grid.step();
+            every_body.step();
+            // The swept test's contacts are the touching ones (depth 0); detection's overlap.
+            for (const Contact& contact : grid.contacts()) touches += contact.penetration == 0.0 ? 1 : 0;
+            if (state_hash(grid) != state_hash(every_body)) {
+                CAPTURE(step, grid.contacts().size(), every_body.contacts().size());
+                FAIL("the grid's swept test left the path of trying every body");
+            }
+        }
+        CHECK(grid.used_broad_phase());
+        // Worth something only if many spheres were moved back to where they touched.
+        CHECK(touches > 100);
+    }
+}
+
+TEST_CASE("two equally early touches go to the partner of smaller index, as when trying every body",
+          "[world][broad_phase][swept]") {
+    // Ball 0 starts touching balls 1 and 2 (gaps exactly 0) and runs through both within the
+    // step (dt = 1 s, every number exact), so both touches come at s = 0. The grid meets ball 2
+    // before ball 1 (ball 2 lies in the cell before ball 0's end, ball 3 stretches the grid so
+    // that it does); the answer must still be ball 1.
+    const std::vector<RigidBody> bodies{make_sphere(1, 0.5, {0, 0, 0}, {1.25, -1.25, 0}), make_immovable_sphere(0.5, {1, 0, 0}),
+                                        make_immovable_sphere(0.5, {0, -1, 0}), make_immovable_sphere(0.5, {-3.9, -1.25, 0})};
+    const WorldSettings settings{1.0, {}};
+    World grid(bodies, settings, bouncing);
+    grid.set_shortcuts({.broad_phase_from = 0});
+    World every_body(bodies, settings, bouncing);
+    every_body.set_shortcuts({.broad_phase = false});
+    grid.step();
+    every_body.step();
+    REQUIRE(grid.used_broad_phase());
+    REQUIRE(grid.contacts().size() == 1);
+    CHECK(grid.contacts()[0].body1 == 0);
+    CHECK(grid.contacts()[0].body2 == 1);
+    CHECK(grid.bodies()[0].position == Vector3{0, 0, 0});  // moved back to where it touched, s = 0
+    CHECK(state_hash(grid) == state_hash(every_body));
+}
+
+TEST_CASE("a sphere that travels past its neighbouring cells still finds what it passes through",
+          "[world][broad_phase][swept]") {
+    // Pinned balls of radius 0.2 on a lattice 0.5 apart, so that the grid's cells are about
+    // 0.4 wide; in the channel between two rows a small ball travels 0.78 in one step, through a
+    // resting small ball 0.25 ahead of it, and ends one or two cells beyond it, depending on
+    // where the cell borders fall: the moving pair is shifted along x in eighths of a cell.
+    for (int shift = 0; shift < 8; ++shift) {
+        CAPTURE(shift);
+        const double dx = 0.05 * shift;
+        std::vector<RigidBody> bodies;
+        for (int i = 0; i < 10; ++i)
+            for (int j = 0; j < 10; ++j) bodies.push_back(make_immovable_sphere(0.2, {-2.25 + 0.5 * i, -2.0 + 0.5 * j, 0}));
+        bodies.push_back(make_sphere(1, 0.04, {dx - 0.5, 0.25, 0}, {1.56, 0, 0}));
+        bodies.push_back(make_sphere(1, 0.04, {dx - 0.25, 0.25, 0}));
+        const WorldSettings settings{0.5, {}};
+        World grid(bodies, settings, bouncing);
+        World every_body(bodies, settings, bouncing);
+        every_body.set_shortcuts({.broad_phase = false});
+        grid.step();
+        every_body.step();
+        REQUIRE(grid.used_broad_phase());
+        REQUIRE(grid.contacts().size() == 1);
+        CHECK(grid.contacts()[0].body1 == 100);
+        CHECK(grid.contacts()[0].body2 == 101);
+        CHECK(state_hash(grid) == state_hash(every_body));
+    }
+}

@@ -1,15 +1,23 @@
 #pragma once
 /// \file
-/// The broad phase: which pairs of bodies are worth handing to the narrow phase.
+/// The broad phase: which pairs of bodies are worth handing to the narrow phase, and which
+/// are worth tracing along their paths (the swept test of swept_spheres.hpp).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
 #include "workbook/rigid_body.hpp"
+#include "workbook/swept_spheres.hpp"
+#include "workbook/vector3.hpp"
 
 namespace workbook {
+
+/// Radius of a sphere around the body's position that holds its whole shape; infinite for a plane.
+double bounding_radius(const RigidBody& body);
 
 /// Two body indices, `first < second`.
 struct BodyPair {
@@ -17,15 +25,91 @@ struct BodyPair {
     std::uint32_t second;  ///< the larger index
 };
 
-/// A bounded body as the broad phase's grid loop reads it: 40 bytes instead of a whole
-/// RigidBody. (Outside BroadPhase so that the API reference has no private nested class.)
+/// One body as the broad phase reads it: 48 bytes instead of a whole RigidBody (328), so
+/// that the grid's passes stream through contiguous memory. Kept in body order, planes too.
+/// (Outside BroadPhase so that the API reference has no private nested class.)
 struct GridProxy {
-    double x;              ///< centre, x, m
-    double y;              ///< centre, y, m
-    double z;              ///< centre, z, m
-    double radius;         ///< bounding radius, m
-    std::uint32_t index;   ///< body index
-    bool movable;          ///< false for an immovable body
+    double x = 0.0;             ///< centre, x, m
+    double y = 0.0;             ///< centre, y, m
+    double z = 0.0;             ///< centre, z, m
+    double radius = 0.0;        ///< bounding radius, m (workbook::bounding_radius; unused for a plane)
+    double travel = 0.0;        ///< how far a swept sphere moved this step, m; 0 for every other body
+    std::uint32_t index = 0;    ///< body index
+    bool movable = false;       ///< false for an immovable body
+    bool plane = false;         ///< a plane: unbounded, never in the grid
+    bool sphere = false;        ///< a sphere: the only shape the swept test traces
+    bool fast = false;          ///< a sphere the swept test traces (set by the broad phase on its copies)
+};
+
+/// A plane as the broad phase reads it.
+struct PlaneProxy {
+    std::uint32_t index;  ///< body index
+    bool movable;         ///< false for an immovable plane
+    Vector3 point;        ///< the body's position, m
+    Vector3 normal;       ///< unit normal in the world frame
+};
+
+/// The body proxies of one step, in body order, and what the broad phase should look for.
+struct ProxySet {
+    std::vector<GridProxy> proxies;   ///< every body, in body order
+    std::vector<PlaneProxy> planes;   ///< the planes again, in body order, with their normals
+    std::vector<Vector3> starts;      ///< with `swept`: where each body started the step, by body index
+    /// Also find the pairs the swept test must try: pairs with a fast sphere (travel greater than
+    /// `fast_travel`) whose paths may come within touching distance.
+    bool swept = false;
+    double fast_travel = 0.0;         ///< m; the smallest sphere radius in the world
+    // Gathered by add() on the way, so that the grid needs no pass of its own to find them:
+    Vector3 low{};                    ///< smallest coordinates of a bounded body's centre, m
+    Vector3 high{};                   ///< largest, m
+    double largest_radius = 0.0;      ///< largest bounding radius of a bounded body, m
+    double poison = 0.0;              ///< 0 when every centre and radius is finite, NaN otherwise
+    std::size_t bounded = 0;          ///< bodies other than planes
+    double travel_sum = 0.0;          ///< sum over spheres of min(travel, 4 radii), m
+    std::size_t spheres = 0;          ///< spheres
+
+    /// Starts a new gathering for `count` bodies.
+    void clear(std::size_t count) {
+        proxies.clear();
+        if (proxies.capacity() < count) proxies.reserve(count);
+        planes.clear();
+        swept = false;
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        low = {inf, inf, inf};
+        high = {-inf, -inf, -inf};
+        largest_radius = 0.0;
+        poison = 0.0;
+        bounded = 0;
+        travel_sum = 0.0;
+        spheres = 0;
+    }
+
+    /// Appends body `index` (the next one in body order), with the travel of a swept sphere.
+    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0) {
+        GridProxy& p = proxies.emplace_back();
+        p.index = index;
+        p.movable = !body.is_immovable();
+        if (body.shape.kind == ShapeKind::plane) {
+            p.plane = true;
+            planes.push_back({index, p.movable, body.position, rotate(body.orientation, body.shape.normal)});
+            return;
+        }
+        p.x = body.position.x;
+        p.y = body.position.y;
+        p.z = body.position.z;
+        p.radius = body.shape.kind == ShapeKind::sphere ? body.shape.radius : bounding_radius(body);
+        p.sphere = body.shape.kind == ShapeKind::sphere;
+        p.travel = travel;
+        ++bounded;
+        if (p.sphere) {
+            ++spheres;
+            travel_sum += std::min(travel, 4.0 * p.radius);  // (NaN counts as 0)
+        }
+        // x * 0 is 0 for every finite x and NaN otherwise: one sum says whether all are finite.
+        poison += (p.x + p.y + p.z + p.radius) * 0.0;
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+        largest_radius = std::max(largest_radius, p.radius);
+    }
 };
 
 /// A uniform grid over the bodies' bounding spheres, rebuilt every step.
@@ -38,34 +122,79 @@ struct GridProxy {
 /// about N * 2 d / L bodies, so its cost grows as N^1.5 (measured with bench/stages.cpp:
 /// at N = 100,000 the strip holds about 100 bodies against the grid's 0.5 per cell).
 ///
-/// Planes are unbounded and stay out of the grid: each body is paired with each plane its
-/// bounding sphere reaches (a body in the middle of the gas reaches none of the four walls).
-/// The pairs come out sorted by (first, second), the order in which testing every pair
-/// visits them, so that sequential responders see contacts in the same order and the
-/// results are bit-identical to testing all pairs.
+/// The grid is walked cell by cell, each cell against itself and the half of its neighbours
+/// that come after it, so that each pair is met once and memory is read in order; the pairs
+/// are then sorted by (first, second), the order in which testing every pair visits them, so
+/// that sequential responders see contacts in the same order and the results are
+/// bit-identical to testing all pairs. Planes are unbounded and stay out of the grid: each
+/// body is paired with each plane its bounding sphere reaches.
 class BroadPhase {
 public:
-    /// Replaces `pairs` with every pair whose bounding spheres overlap (a conservative test:
-    /// the narrow phase decides), plus every pair with a plane, leaving out pairs of two
-    /// immovable bodies unless `immovable_pairs`. Allocates only when the scene grew.
+    /// Finds, for the gathered `set`, every pair whose bounding spheres overlap (a conservative
+    /// test: the narrow phase decides), plus every body-plane pair whose sphere reaches the
+    /// plane, leaving out pairs of two immovable bodies unless `immovable_pairs`; sorted. With
+    /// `set.swept`, also the swept test's candidates (see sweep_partners()). Allocates only
+    /// when the scene grew.
+    void find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, bool immovable_pairs = false);
+
+    /// The same for `bodies` as they stand, without a swept test (for tests and tools).
     void find_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs = false);
 
     /// Every pair in index order, without a grid: what find_pairs() falls back to for
     /// bodies at non-finite positions, and what the world uses for a handful of bodies.
     static void all_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs = false);
 
-private:
-    using Proxy = GridProxy;
-    std::vector<Proxy> proxies_;            ///< bounded bodies, in index order
-    std::vector<std::uint32_t> unbounded_;  ///< planes, in index order
-    std::vector<Vector3> plane_normals_;    ///< world normal of each plane in unbounded_
-    std::vector<std::uint32_t> cell_of_;    ///< grid cell of each proxy
-    std::vector<std::uint32_t> cell_start_; ///< first entry of each cell in by_cell_ (counting sort)
-    std::vector<Proxy> by_cell_;            ///< the proxies grouped by cell, each cell in index order
-    std::vector<std::uint32_t> candidates_; ///< one body's partners, sorted before they are emitted
-};
+    static constexpr std::uint32_t partner_may_touch = std::uint32_t{1} << 31;  ///< see sweep_partners()
+    static constexpr std::uint32_t partner_index = partner_may_touch - 1;      ///< see sweep_partners()
 
-/// Radius of a sphere around the body's position that holds its whole shape; infinite for a plane.
-double bounding_radius(const RigidBody& body);
+    /// True when the last find_pairs() used a grid (false after it fell back to every pair).
+    [[nodiscard]] bool has_grid() const { return has_grid_; }
+
+    /// After a find_pairs() with a swept set and a grid: the bodies whose path may come within
+    /// touching distance of fast sphere `body`'s during the step (a superset; each at most once,
+    /// in no particular order), as entries: the index (entry & partner_index), and the flag
+    /// partner_may_touch unless spheres_may_touch() said no for the two paths as gathered (it
+    /// must be asked again if the partner has been moved since). Planes always carry the flag.
+    /// Spheres and planes only. Empty for a body that is not fast.
+    [[nodiscard]] std::span<const std::uint32_t> sweep_partners(std::uint32_t body) const {
+        if (body + 1 >= sweep_start_.size()) return {};
+        return std::span<const std::uint32_t>(sweep_partners_).subspan(sweep_start_[body],
+                                                                      sweep_start_[body + 1] - sweep_start_[body]);
+    }
+
+private:
+    /// Builds the grid over the bounded proxies; false when a position is not finite.
+    bool build_grid(const ProxySet& set);
+    /// Walks the grid and the wide proxies, appending candidate pairs.
+    void collect_pairs(const ProxySet& set, bool immovable_pairs);
+    /// Appends the pairs of the bounded proxies with the planes.
+    void collect_plane_pairs(const ProxySet& set, bool immovable_pairs);
+    /// The grid cell along `axis` of a bounded proxy's coordinate `x` (as the grid placed it).
+    [[nodiscard]] std::uint64_t axis_cell_of(double x, int axis) const {
+        return std::min(static_cast<std::uint64_t>((x - low_[axis]) * inverse_cell_), cells_[axis] - 1);
+    }
+    /// Sorts contact_keys_ into `pairs`, and turns sweep_pairs_ into per-body lists.
+    void finish(const ProxySet& set, std::vector<BodyPair>& pairs);
+
+    std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
+    std::vector<Vector3> by_cell_start_;      ///< with a swept set, their starts, in the same order
+    std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
+    std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
+    std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
+    std::vector<std::uint32_t> large_;        ///< slots in by_cell_ of the large proxies
+    std::vector<std::uint64_t> contact_keys_; ///< first << 32 | second, before sorting
+    std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner entry) for the swept test, any order
+    std::vector<std::uint32_t> sweep_start_;  ///< per body, into sweep_partners_
+    std::vector<std::uint32_t> sweep_partners_;
+    ProxySet scratch_set_;                    ///< for the find_pairs() that gathers itself
+    bool has_grid_ = false;
+    double low_[3] = {0.0, 0.0, 0.0};  ///< the grid's lowest corner, m
+    double inverse_cell_ = 0.0;        ///< 1 / cell width, 1/m
+    std::uint64_t cells_[3] = {1, 1, 1};
+    double slack_ = 0.0;               ///< absolute room for rounding in the swept reach, m
+    double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
+    double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
+    double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
+};
 
 }  // namespace workbook

@@ -32,6 +32,16 @@ std::optional<Contact> collide(const RigidBody& a, std::uint32_t index_a, const 
 /// optional return costs (a Contact has room for four points, 184 bytes).
 bool overlaps(const RigidBody& a, const RigidBody& b);
 
+/// The sphere-sphere test and writer on plain numbers (body 1 at centre1), for loops that keep
+/// the numbers apart from the bodies; overlaps() and write_contact() give the same bits.
+bool spheres_overlap(const Vector3& centre1, double radius1, const Vector3& centre2, double radius2);
+/// See spheres_overlap(); `contact` must be a default Contact, its indices are left to the caller.
+void write_spheres(const Vector3& centre1, double radius1, const Vector3& centre2, double radius2, Contact& contact);
+/// The sphere-plane test on plain numbers: a plane through `point` with unit world `normal`.
+bool sphere_plane_overlap(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal);
+/// See sphere_plane_overlap(); the sphere is body 1.
+void write_sphere_plane(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal, Contact& contact);
+
 /// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
 /// Contact; same result as collide(). Returns false when the pair does not touch after all:
 /// for a pair with a box, overlaps() only compares bounding spheres and the full

@@ -15,6 +15,7 @@
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
+#include "workbook/swept_spheres.hpp"
 
 namespace workbook {
 
@@ -153,11 +154,30 @@ private:
     void guard(const char* stage) const;
     /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
     void add_contact_if_any(std::uint32_t i, std::uint32_t j);
+    /// The same, from proxies_ (gathered this step) for spheres and planes.
+    void add_contact_from_proxies(std::uint32_t i, std::uint32_t j);
+    /// detect(); `gathered` when integrate_bodies() has filled proxies_ already (and, for a
+    /// swept set, the broad phase also finds the swept test's candidates).
+    void find_contacts(bool gathered);
+    /// Stage 1; with `gather`, fills proxies_ in the same pass (and the swept test's starts
+    /// when `swept`). Returns 0 when every body is finite afterwards, NaN otherwise.
+    double integrate_bodies(bool gather, bool swept);
+    /// True when detect() uses the grid for this world's size and shortcuts.
+    [[nodiscard]] bool uses_grid() const;
+    /// The guard for a stage that changed only the bodies `changed`.
+    void guard_bodies(const char* stage, std::span<const std::uint32_t> changed) const;
+    /// Stages 3 and 4; each returns 0 when the bodies it changed are finite, NaN otherwise.
+    double respond_contacts();
+    double correct_contacts();
+    /// Fills proxies_ from the bodies as they stand (no swept test).
+    void gather_proxies();
 
     std::vector<RigidBody> bodies_;
     std::vector<Contact> contacts_;
     BroadPhase broad_phase_;
     std::vector<BodyPair> pairs_;
+    ProxySet proxies_;
+    SweepScratch sweep_scratch_;
     Shortcuts shortcuts_;
     bool used_broad_phase_ = false;
     WorldSettings settings_;
