@@ -194,9 +194,9 @@ void sweep_fast_spheres(World& world) {
     // found for moved sphere i stays unless its other body moved later (at a larger index),
     // which is then detected again against i in its turn.
     std::erase_if(world.contacts_, [&](const Contact& c) { return scratch.is_moved[c.body1] || scratch.is_moved[c.body2]; });
-    // With the grid, the bodies that may overlap sphere i where it now is are among its swept
-    // partners (its place is on its path, theirs on theirs), plus the boxes, which the swept
-    // test does not trace; sorted, they are tried in the same order as every body would be.
+    // With the grid, the spheres that may overlap sphere i where it now is are among its swept
+    // partners (its place is on its path, theirs on theirs); the planes and the boxes are tried
+    // whole. Sorted, the candidates are tried in the same order as every body would be.
     scratch.boxes.clear();
     if (use_grid)
         for (std::uint32_t j = 0; j < count; ++j)
@@ -213,7 +213,9 @@ void sweep_fast_spheres(World& world) {
             partner_overlaps = partner_overlaps || j == touching.body2;
         };
         if (use_grid) {
+            // Planes are partners only when a centre ended behind them, so every plane is tried.
             scratch.candidates.assign(scratch.boxes.begin(), scratch.boxes.end());
+            for (const PlaneProxy& plane : set.planes) scratch.candidates.push_back(plane.index);
             for (const std::uint32_t entry : world.broad_phase_.sweep_partners(i))
                 scratch.candidates.push_back(entry & BroadPhase::partner_index);
             std::ranges::sort(scratch.candidates);
