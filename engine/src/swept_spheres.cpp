@@ -218,9 +218,11 @@ void sweep_fast_spheres(World& world) {
             for (const PlaneProxy& plane : set.planes) scratch.candidates.push_back(plane.index);
             for (const std::uint32_t entry : world.broad_phase_.sweep_partners(i))
                 scratch.candidates.push_back(entry & BroadPhase::partner_index);
+            // (std::unique, not std::ranges::unique: Clang 14 cannot compile the latter with
+            // GCC 12's standard library.)
             std::ranges::sort(scratch.candidates);
-            const auto duplicates = std::ranges::unique(scratch.candidates);
-            scratch.candidates.erase(duplicates.begin(), duplicates.end());
+            scratch.candidates.erase(std::unique(scratch.candidates.begin(), scratch.candidates.end()),
+                                     scratch.candidates.end());
             for (const std::uint32_t j : scratch.candidates) try_body(j);
         } else {
             for (std::uint32_t j = 0; j < count; ++j) try_body(j);
