@@ -144,8 +144,17 @@ def machine():
     return f"{model}, {os.cpu_count()} logical cores, {platform.system()} {platform.release()}"
 
 
-def markdown(rows, engines, sizes, repeat, when):
-    lines = [f"Measured {when} on {machine()}; each time is the median of {repeat} runs "
+def load_average():
+    """The 1-minute load average as text, or "unknown" off Linux and the BSDs."""
+    try:
+        return f"{os.getloadavg()[0]:.1f}"
+    except (AttributeError, OSError):
+        return "unknown"
+
+
+def markdown(rows, engines, sizes, repeat, when, load):
+    lines = [f"Measured {when} on {machine()}, load average {load[0]} at the start and {load[1]} at the end; "
+             f"each time is the median of {repeat} runs "
              "(processor time, each run in its own process; the machine is shared, so compare engines within this table only).", ""]
     head = "| N | steps |" + "".join(f" {TITLES[e]} ms/step |" for e in engines)
     lines += [head, "|" + "---|" * (2 + len(engines))]
@@ -201,6 +210,15 @@ grid (`bench/gas.cpp`; each peer's set-up is in `bench/gas_<engine>.cpp`). Repro
 `./workbook bench speed`.
 
 {table}
+Each workbook step here does all it does in a scene: one pass over the bodies moves them,
+checks that every number is finite and copies what the broad phase reads into 48-byte
+proxies; a uniform grid, walked cell by cell, finds both the pairs that may overlap and the
+pairs whose paths may cross within the step; the narrow phase writes the contacts; the swept
+test traces every disc that moved further than its radius (most of them: 5 m/s is 0.083 m a
+step) against the candidates the grid found, so that none passes through another unseen; and
+the elastic impulse answers each contact. The peers run with their own defaults
+(`bench/gas_<engine>.cpp` says which). `./workbook bench stages` times each stage on its own.
+
 Memory is the peak resident size of the run minus that of the same engine with one body,
 divided by N. Energy drift is \\f$|E_\\text{{end}} - E_\\text{{start}}| / E_\\text{{start}}\\f$ of
 the kinetic energy: the workbook's elastic impulse keeps it at rounding level, the peers'
@@ -231,7 +249,9 @@ def main():
         print(f"bench: not built with {', '.join(missing)} (their Debian packages are missing)", file=sys.stderr)
     when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     PEERS_UP_TO[0] = args.peers_up_to
+    load_before = load_average()
     rows = measure(args.gas, engines, args.sizes, args.repeat, args.steps, args.timeout, args.peers_up_to)
+    load = (load_before, load_average())
 
     args.out.mkdir(parents=True, exist_ok=True)
     csv_path = args.out / "speed.csv"
@@ -239,7 +259,7 @@ def main():
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    table = markdown(rows, engines, args.sizes, args.repeat, when)
+    table = markdown(rows, engines, args.sizes, args.repeat, when, load)
     (args.out / "speed.md").write_text(table)
     (args.out / "performance.md").write_text(PAGE.format(table=table))
     if not args.no_figure:

@@ -4,6 +4,9 @@
 // inside a step (a step's state changes, its size does not).
 #include <benchmark/benchmark.h>
 
+#include <utility>
+#include <vector>
+
 #include "gas_world.hpp"
 #include "workbook/probes.hpp"
 
@@ -15,6 +18,35 @@ using workbook::bench::make_gas_world;
 
 World warm_gas(benchmark::State& state) {
     World world = make_gas_world(make_gas(static_cast<std::uint32_t>(state.range(0))));
+    for (int i = 0; i < 10; ++i) world.step();
+    return world;
+}
+
+/// An elastic impulse, as in the gas (bench/gas_workbook.cpp).
+void elastic(workbook::RigidBody& body1, workbook::RigidBody& body2, const workbook::Contact& contact) {
+    const double approach = dot(body1.velocity - body2.velocity, contact.normal);
+    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
+    if (approach >= 0.0 || inverse_masses == 0.0) return;
+    const double impulse = -2.0 * approach / inverse_masses;
+    body1.velocity += contact.normal * (impulse * body1.inverse_mass);
+    body2.velocity -= contact.normal * (impulse * body2.inverse_mass);
+}
+
+/// A floor of 20 x 20 immovable tiles (boxes 0.5 m wide, edge to edge, so that neighbouring
+/// tiles touch) under 400 falling balls: the scene where pairs of immovable bodies are many.
+World tiled_floor() {
+    std::vector<workbook::RigidBody> bodies;
+    for (int i = 0; i < 400; ++i) {
+        workbook::RigidBody tile = workbook::make_box(1.0, {0.25, 0.1, 0.25}, {-5.0 + 0.25 + 0.5 * (i % 20), -0.1, -5.0 + 0.25 + 0.5 * (i / 20)});
+        tile.inverse_mass = 0.0;
+        tile.inertia_body = workbook::Matrix3::zero();
+        tile.update_world_inertia();
+        bodies.push_back(tile);
+    }
+    for (int i = 0; i < 400; ++i)
+        bodies.push_back(workbook::make_sphere(1.0, 0.1, {-4.75 + 0.5 * (i % 20), 0.5 + 0.1 * (i % 7), -4.75 + 0.5 * (i / 20)}));
+    static constexpr workbook::ResponseModel model{"elastic", elastic, nullptr};
+    World world(std::move(bodies), workbook::WorldSettings{1.0 / 60.0, {0, -9.81, 0}}, model);
     for (int i = 0; i < 10; ++i) world.step();
     return world;
 }
@@ -47,9 +79,10 @@ void detect_grid_or_all_pairs(benchmark::State& state) {
 }
 
 /// step() with one shortcut off (range 1: 0 none, 1 immovable pairs, 2 still rotation,
-/// 3 zero gravity, 4 energy probe on, 5 broad phase): what each shortcut buys on the gas.
+/// 3 zero gravity, 4 energy probe on, 5 broad phase): what each shortcut buys on the gas
+/// (range 0 = its N) or, for range 0 = 0, on the tiled floor, where immovable pairs are many.
 void step_with_one_shortcut_off(benchmark::State& state) {
-    World world = warm_gas(state);
+    World world = state.range(0) == 0 ? tiled_floor() : warm_gas(state);
     workbook::Shortcuts shortcuts;
     shortcuts.response_energy_probe = false;  // what the gas driver runs with
     switch (state.range(1)) {
@@ -65,6 +98,18 @@ void step_with_one_shortcut_off(benchmark::State& state) {
         world.step();
         benchmark::DoNotOptimize(world.probes());
     }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+/// step() of the gas with the swept test off (range 1 = 0) or on (1): what it costs.
+void step_swept_or_not(benchmark::State& state) {
+    const World warm = warm_gas(state);
+    workbook::WorldSettings settings = warm.settings();
+    settings.swept_spheres = state.range(1) == 1;
+    World world(std::vector<workbook::RigidBody>(warm.bodies().begin(), warm.bodies().end()), settings, warm.model());
+    world.set_shortcuts({.response_energy_probe = false});
+    world.step();
+    for (auto _ : state) world.step();
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -93,7 +138,8 @@ void step(benchmark::State& state) {
 BENCHMARK(integrate)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(detect)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(detect_grid_or_all_pairs)->ArgsProduct({{2, 8, 16, 32, 64, 128}, {0, 1}});
-BENCHMARK(step_with_one_shortcut_off)->ArgsProduct({{1000}, {0, 1, 2, 3, 4, 5}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(step_with_one_shortcut_off)->ArgsProduct({{0, 1000}, {0, 1, 2, 3, 4, 5}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(step_swept_or_not)->ArgsProduct({{1000, 10000}, {0, 1}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(respond)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(probes)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(step)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);

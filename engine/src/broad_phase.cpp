@@ -104,6 +104,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // A sphere that travelled more than four of the largest radii is "wide": kept out of the
     // grid and tried against every body, as it would widen the search of every large sphere.
     wide_.clear();
+    if (wide_.capacity() < bounded) wide_.reserve(bounded);
     const double wide_travel = 4.0 * largest;
     double small_reach = largest;
     if (set.swept) {
@@ -167,6 +168,8 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // indirection through an index array made the pass 1.6 times slower). cell_start_[c] walks
     // forward while filling; afterwards cell c spans [old start of c, start of c + 1).
     large_.clear();
+    // Room for every proxy (4 bytes each): how many are large changes from step to step.
+    if (large_.capacity() < in_grid) large_.reserve(in_grid);
     largest_reach_ = largest;
     for (std::size_t k = 0; k < set.proxies.size(); ++k) {
         if (cell_of_[k] == not_in_grid) continue;

@@ -1,6 +1,7 @@
 #include "workbook/world.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -259,13 +260,16 @@ Probes World::probes() const {
 namespace workbook {
 
 std::vector<StageUse> World::plan() const {
-    std::size_t movable = 0, spinning = 0, planes = 0;
+    std::size_t movable = 0, spinning = 0, planes = 0, movable_spheres = 0;
+    double smallest_radius = std::numeric_limits<double>::infinity();
     for (const RigidBody& body : bodies_) {
+        if (body.shape.kind == ShapeKind::sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
         if (body.is_immovable()) {
             planes += body.shape.kind == ShapeKind::plane ? 1 : 0;
             continue;
         }
         ++movable;
+        movable_spheres += body.shape.kind == ShapeKind::sphere ? 1 : 0;
         if (body.angular_velocity != Vector3{}) ++spinning;
     }
     const std::size_t immovable = bodies_.size() - movable;
@@ -286,6 +290,18 @@ std::vector<StageUse> World::plan() const {
     const std::size_t immovable_pairs = immovable > 1 ? immovable * (immovable - 1) / 2 : 0;
     stages.push_back({"detect: pairs of immovable bodies", !shortcuts_.skip_immovable_pairs,
                       std::to_string(immovable_pairs) + " such pairs, never tested"});
+    const bool discrete = settings_.contact_timing == ContactTiming::discrete;
+    const bool swept = discrete && settings_.swept_spheres && movable_spheres > 0;
+    std::string why = "no movable sphere";
+    if (!discrete) why = "event timing answers each contact at its moment";
+    else if (!settings_.swept_spheres) why = "off in this scene (swept_spheres)";
+    else if (swept) {
+        char radius[32];
+        std::snprintf(radius, sizeof radius, "%.3g", smallest_radius);
+        why = std::to_string(movable_spheres) + " movable spheres; each traced in a step where it moves further than " +
+              radius + " m (the smallest radius), against the candidates " + (grid ? "the grid finds" : "of every body");
+    }
+    stages.push_back({"detect: swept test", swept, why});
     stages.push_back({"respond", model_.respond != nullptr,
                       model_.respond != nullptr ? "responder '" + std::string(model_.name) + "'" : "the model has no velocity responder"});
     stages.push_back({"respond: energy probe", model_.respond != nullptr && shortcuts_.response_energy_probe,

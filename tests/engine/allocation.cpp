@@ -80,12 +80,13 @@ World pile_of_balls() {
 }
 
 /// A 2D gas of 400 balls in a box, enough bodies for the world's grid broad phase, whose
-/// contact count changes from step to step.
-World gas_in_a_box() {
+/// contact count changes from step to step. With `radius` 0.05 most balls move further than
+/// their radius in a step, so that the swept test traces them and moves some back.
+World gas_in_a_box(double radius = 0.2) {
     std::vector<RigidBody> bodies;
     for (int i = 0; i < 400; ++i) {
         const double x = -4.75 + 0.5 * (i % 20), y = -4.75 + 0.5 * (i / 20);
-        bodies.push_back(make_sphere(1.0, 0.2, {x, y, 0}, {std::sin(1.0 * i) * 4, std::cos(1.7 * i) * 4, 0}));
+        bodies.push_back(make_sphere(1.0, radius, {x, y, 0}, {std::sin(1.0 * i) * 4, std::cos(1.7 * i) * 4, 0}));
     }
     bodies.push_back(make_immovable_plane({1, 0, 0}, {-5, 0, 0}));
     bodies.push_back(make_immovable_plane({-1, 0, 0}, {5, 0, 0}));
@@ -165,6 +166,29 @@ TEST_CASE("once warm, a gas stepped with the grid broad phase allocates nothing"
     // Stored in proportion: far below one contact per pair of bodies.
     CHECK(world.contacts().size() < world.bodies().size());
     CHECK(most_contacts > 0);
+}
+
+TEST_CASE("once warm, a gas the swept test traces allocates nothing", "[world][allocation][broad_phase][swept]") {
+    // Small fast balls: the grid finds the swept test's candidates, and balls that went through
+    // each other are moved back, every step.
+    World world = gas_in_a_box(0.05);
+    for (int i = 0; i < 120; ++i) world.step();
+
+    constexpr int steps = 600;
+    std::size_t touches = 0;
+    std::size_t allocated = 0;
+    {
+        const AllocationCounter counter;
+        for (int i = 0; i < steps; ++i) {
+            world.step();
+            for (const Contact& contact : world.contacts()) touches += contact.penetration == 0.0 ? 1 : 0;
+        }
+        allocated = AllocationCounter::count();
+    }
+    CHECK(allocated == 0);
+    CHECK(world.used_broad_phase());
+    // Worth something only if the swept test moved balls back (its contacts touch, depth 0).
+    CHECK(touches > 100);
 }
 
 TEST_CASE("each stage on its own allocates nothing after the first step", "[world][allocation]") {

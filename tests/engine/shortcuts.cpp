@@ -126,6 +126,14 @@ TEST_CASE("the plan names the stages a scene uses and those it skips", "[world][
     CHECK_FALSE(find("detect: pairs of immovable bodies").used);
     CHECK(find("respond").used);
     CHECK_FALSE(find("correct").used);
+    const StageUse swept = find("detect: swept test");
+    CHECK(swept.used);
+    CHECK(swept.why.find("the grid finds") != std::string::npos);
+    WorldSettings unswept{1.0 / 120.0, {}};
+    unswept.swept_spheres = false;
+    const World off(scene(1), unswept, bouncing);
+    CHECK_FALSE(off.plan()[5].used);
+    CHECK(off.plan()[5].why == "off in this scene (swept_spheres)");
     const World two({make_sphere(1, 0.5, {}), make_sphere(1, 0.5, {2, 0, 0})}, WorldSettings{0.01, {0, -9.81, 0}}, bouncing);
     CHECK_FALSE(two.plan()[3].used);  // two bodies: every pair, no grid
     CHECK(two.plan()[1].used);        // gravity
