@@ -15,6 +15,14 @@ double bounding_radius(const RigidBody& body) {
     return std::numeric_limits<double>::infinity();
 }
 
+void ProxySet::add_plane(const RigidBody& body, std::uint32_t index) {
+    GridProxy& p = proxies.emplace_back();
+    p.index = index;
+    p.movable = !body.is_immovable();
+    p.plane = true;
+    planes.push_back({index, p.movable, body.position, rotate(body.orientation, body.shape.normal)});
+}
+
 void BroadPhase::all_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs) {
     pairs.clear();
     const auto count = static_cast<std::uint32_t>(bodies.size());
@@ -123,13 +131,25 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // so that the grid never has more than about two cells per body (memory stays linear in N).
     const std::size_t budget = 2 * bounded + 8;
     double cell = std::max(reach * (1.0 + 1e-6) + 4.0 * slack_, std::numeric_limits<double>::min());
+    // Where the budget binds, start near the width that meets it (the volume, or area, or
+    // length the bodies span over the budget), then widen in small steps: steps of 1.5 left
+    // the 2D gas of 1,000 discs with cells 0.34 m wide where 0.23 m fit, twice the pairs to test.
+    double span = 1.0;
+    int dimensions = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (hi[axis] - lo[axis] > 0.0) {
+            span *= hi[axis] - lo[axis];
+            ++dimensions;
+        }
+    }
+    if (dimensions > 0) cell = std::max(cell, 0.9 * std::pow(span / static_cast<double>(budget), 1.0 / dimensions));
     std::uint64_t nx = 0, ny = 0, nz = 0;
     for (;;) {
         nx = cells_along(hi[0] - lo[0], cell);
         ny = cells_along(hi[1] - lo[1], cell);
         nz = cells_along(hi[2] - lo[2], cell);
         if (nx <= budget && ny <= budget && nz <= budget && nx * ny * nz <= budget) break;
-        cell *= 1.5;
+        cell *= 1.05;
     }
     const double inverse_cell = 1.0 / cell;
     low_[0] = lo[0], low_[1] = lo[1], low_[2] = lo[2];

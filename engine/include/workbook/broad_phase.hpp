@@ -85,20 +85,20 @@ struct ProxySet {
 
     /// Appends body `index` (the next one in body order), with the travel of a swept sphere.
     void add(const RigidBody& body, std::uint32_t index, double travel = 0.0) {
-        GridProxy& p = proxies.emplace_back();
-        p.index = index;
-        p.movable = !body.is_immovable();
         if (body.shape.kind == ShapeKind::plane) {
-            p.plane = true;
-            planes.push_back({index, p.movable, body.position, rotate(body.orientation, body.shape.normal)});
+            add_plane(body, index);
             return;
         }
+        GridProxy p;
         p.x = body.position.x;
         p.y = body.position.y;
         p.z = body.position.z;
-        p.radius = body.shape.kind == ShapeKind::sphere ? body.shape.radius : bounding_radius(body);
         p.sphere = body.shape.kind == ShapeKind::sphere;
+        p.radius = p.sphere ? body.shape.radius : bounding_radius(body);
         p.travel = travel;
+        p.index = index;
+        p.movable = !body.is_immovable();
+        proxies.push_back(p);
         ++bounded;
         if (p.sphere) {
             ++spheres;
@@ -106,10 +106,13 @@ struct ProxySet {
         }
         // x * 0 is 0 for every finite x and NaN otherwise: one sum says whether all are finite.
         poison += (p.x + p.y + p.z + p.radius) * 0.0;
-        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+        low.x = std::min(low.x, p.x), low.y = std::min(low.y, p.y), low.z = std::min(low.z, p.z);
+        high.x = std::max(high.x, p.x), high.y = std::max(high.y, p.y), high.z = std::max(high.z, p.z);
         largest_radius = std::max(largest_radius, p.radius);
     }
+
+private:
+    void add_plane(const RigidBody& body, std::uint32_t index);
 };
 
 /// A uniform grid over the bodies' bounding spheres, rebuilt every step.
