@@ -83,7 +83,7 @@ void sweep_fast_spheres(World& world) {
 
     // Each body's start, kept while bodies are moved back: a body moved back did start there.
     // The grid's gathering found them already.
-    std::vector<Vector3>& starts = set.starts;
+    std::vector<Vector3>& starts = scratch.starts;
     if (!use_grid) {
         const double dt = settings.time_step;
         const Vector3 gravity_term = settings.gravity * ((1.0 - gravity_position_factor(settings.integrator)) * dt * dt);
@@ -111,7 +111,7 @@ void sweep_fast_spheres(World& world) {
     }
 
     for (std::uint32_t i = 0; i < count; ++i) {
-        const Vector3 fast_start = starts[i];
+        const Vector3 fast_start = use_grid ? set.proxies[i].start : starts[i];
         EarliestTouch touch{1.0, count};
         if (use_grid) {
             const GridProxy& p = set.proxies[i];
@@ -134,7 +134,7 @@ void sweep_fast_spheres(World& world) {
                     continue;
                 }
                 const Vector3 other_end{q.x, q.y, q.z};
-                const Vector3& other_start = starts[j];
+                const Vector3& other_start = q.start;
                 if (!moved || spheres_may_touch(end, fast_start, p.radius, other_end, other_start, q.radius))
                     touch.offer(first_touch_spheres(end, fast_start, p.radius, other_end, other_start, q.radius), j);
             }
@@ -154,7 +154,7 @@ void sweep_fast_spheres(World& world) {
         RigidBody& fast = bodies[i];
         const double earliest = touch.fraction;
         const RigidBody& other = bodies[touch.partner];
-        const Vector3 other_start = starts[touch.partner];
+        const Vector3 other_start = use_grid ? set.proxies[touch.partner].start : starts[touch.partner];
         fast.position = fast_start + (fast.position - fast_start) * earliest;
         if (use_grid) {
             GridProxy& p = set.proxies[i];

@@ -25,7 +25,7 @@ struct BodyPair {
     std::uint32_t second;  ///< the larger index
 };
 
-/// One body as the broad phase reads it: 48 bytes instead of a whole RigidBody (328), so
+/// One body as the broad phase reads it: 72 bytes instead of a whole RigidBody (328), so
 /// that the grid's passes stream through contiguous memory. Kept in body order, planes too.
 /// (Outside BroadPhase so that the API reference has no private nested class.)
 struct GridProxy {
@@ -34,6 +34,8 @@ struct GridProxy {
     double z = 0.0;             ///< centre, z, m
     double radius = 0.0;        ///< bounding radius, m (workbook::bounding_radius; unused for a plane)
     double travel = 0.0;        ///< how far a swept sphere moved this step, m; 0 for every other body
+    Vector3 start{};            ///< with a swept set: where the body started the step, m (next to its end,
+                                ///< so that the swept test reads both from one place)
     std::uint32_t index = 0;    ///< body index
     bool movable = false;       ///< false for an immovable body
     bool plane = false;         ///< a plane: unbounded, never in the grid
@@ -53,7 +55,6 @@ struct PlaneProxy {
 struct ProxySet {
     std::vector<GridProxy> proxies;   ///< every body, in body order
     std::vector<PlaneProxy> planes;   ///< the planes again, in body order, with their normals
-    std::vector<Vector3> starts;      ///< with `swept`: where each body started the step, by body index
     /// Also find the pairs the swept test must try: pairs with a fast sphere (travel greater than
     /// `fast_travel`) whose paths may come within touching distance.
     bool swept = false;
@@ -83,8 +84,8 @@ struct ProxySet {
         spheres = 0;
     }
 
-    /// Appends body `index` (the next one in body order), with the travel of a swept sphere.
-    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0) {
+    /// Appends body `index` (the next one in body order), with the travel and start of a swept sphere.
+    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {}) {
         if (body.shape.kind == ShapeKind::plane) {
             add_plane(body, index);
             return;
@@ -96,6 +97,7 @@ struct ProxySet {
         p.sphere = body.shape.kind == ShapeKind::sphere;
         p.radius = p.sphere ? body.shape.radius : bounding_radius(body);
         p.travel = travel;
+        p.start = start;
         p.index = index;
         p.movable = !body.is_immovable();
         proxies.push_back(p);
@@ -180,7 +182,6 @@ private:
     void finish(const ProxySet& set, std::vector<BodyPair>& pairs);
 
     std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
-    std::vector<Vector3> by_cell_start_;      ///< with a swept set, their starts, in the same order
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
     std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
