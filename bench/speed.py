@@ -13,8 +13,8 @@ engine's N = 1 run, divided by N) and the relative drift of kinetic energy. It w
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread),
 which waiting for a core on a shared machine does not inflate; still, take the medians and
-compare engines only within one run. Runs are interleaved (every engine at one N, then the next repetition) so that a
-burst of load from elsewhere hits all engines alike.
+compare engines only within one run. Runs are interleaved (each repetition runs every N and
+every engine once) so that a burst of load from elsewhere hits all sizes and engines alike.
 """
 
 import argparse
@@ -87,32 +87,39 @@ def skipped_row(engine, n, steps):
 
 
 def measure(gas, engines, sizes, repeat, steps, timeout, peers_up_to):
+    """Every repetition runs every N and every engine once, so that a change of load on the
+    shared machine while the bench runs (others compiling) falls on all sizes and engines alike:
+    the growth with N compares runs made side by side, not the quiet start with a busy end."""
     rows = []
     baseline = {}
     for engine in engines:
         base = run_once(gas, engine, 1, 0, timeout)
         baseline[engine] = base[1] if base else 0
-    for n in sizes:
-        s = steps_for(n, steps)
-        times = {e: [] for e in engines}
-        last = {}
-        for _ in range(repeat):
+    times = {(e, n): [] for e in engines for n in sizes}
+    failed = set()
+    for rep in range(repeat):
+        for n in sizes:
             for engine in engines:
-                if engine in last and last[engine] is None:
+                if (engine, n) in failed:
                     continue  # failed or timed out once at this N: do not wait again
                 if engine != "workbook" and n > peers_up_to:
                     continue
-                result = run_once(gas, engine, n, s, timeout)
-                last[engine] = result
+                result = run_once(gas, engine, n, steps_for(n, steps), timeout)
                 if result:
-                    times[engine].append((float(result[0][3]), result))
+                    times[(engine, n)].append((float(result[0][3]), result))
+                    print(f"  run {rep + 1}/{repeat}: {engine:9} N={n:6}: {float(result[0][3]):.4g} ms/step", file=sys.stderr)
+                else:
+                    failed.add((engine, n))
+    for n in sizes:
+        s = steps_for(n, steps)
         for engine in engines:
-            if not times[engine]:
+            runs = times[(engine, n)]
+            if not runs:
                 rows.append(skipped_row(engine, n, s))
                 continue
-            ms = [t for t, _ in times[engine]]
-            fields, rss = times[engine][-1][1]
-            peak = max(r[1] for _, r in times[engine])
+            ms = [t for t, _ in runs]
+            fields, rss = runs[-1][1]
+            peak = max(r[1] for _, r in runs)
             rows.append({"engine": engine, "n": n, "steps": s, "repeats": len(ms),
                          "ms_per_step": f"{statistics.median(ms):.6g}", "ms_per_step_min": f"{min(ms):.6g}",
                          "ms_per_step_max": f"{max(ms):.6g}",

@@ -83,7 +83,7 @@ void sweep_fast_spheres(World& world) {
 
     // Each body's start, kept while bodies are moved back: a body moved back did start there.
     // The grid's gathering found them already.
-    std::vector<Vector3>& starts = set.starts;
+    std::vector<Vector3>& starts = scratch.starts;
     if (!use_grid) {
         const double dt = settings.time_step;
         const Vector3 gravity_term = settings.gravity * ((1.0 - gravity_position_factor(settings.integrator)) * dt * dt);
@@ -91,9 +91,7 @@ void sweep_fast_spheres(World& world) {
         for (std::uint32_t j = 0; j < count; ++j) starts[j] = start_of_step(bodies[j], dt, gravity_term);
     }
     double smallest_radius = std::numeric_limits<double>::infinity();
-    if (use_grid) {
-        smallest_radius = set.fast_travel;
-    } else {
+    if (!use_grid) {
         for (const RigidBody& body : bodies)
             if (body.shape.kind == ShapeKind::sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
     }
@@ -112,34 +110,39 @@ void sweep_fast_spheres(World& world) {
     }
 
     for (std::uint32_t i = 0; i < count; ++i) {
-        const Vector3 fast_start = starts[i];
         EarliestTouch touch{1.0, count};
+        Vector3 fast_start;
         if (use_grid) {
-            const GridProxy& p = set.proxies[i];
-            if (!(p.movable && p.sphere && p.travel > smallest_radius)) continue;
+            // Only fast spheres have partners (the grid found them). Most partners could not
+            // touch as the grid saw them, and are tried again only if they have been moved back
+            // since (see BroadPhase::sweep_partners()): the sphere itself is read only when one can.
             const std::span<const std::uint32_t> partners = world.broad_phase_.sweep_partners(i);
-            if (partners.empty()) continue;
-            // Ends from the proxies: the same numbers as the bodies' positions (a body moved back
-            // has its proxy moved with it), read from contiguous memory.
-            const Vector3 end{p.x, p.y, p.z};
+            const GridProxy* p = nullptr;
+            Vector3 end;
             for (const std::uint32_t entry : partners) {
-                // Partners that could not touch as the grid saw them are tried again only if they
-                // have been moved back since (see BroadPhase::sweep_partners()).
                 const std::uint32_t j = entry & BroadPhase::partner_index;
                 const bool moved = scratch.is_moved[j] != 0;
                 if (!(entry & BroadPhase::partner_may_touch) && !moved) continue;
+                if (p == nullptr) {
+                    // Ends from the proxies: the same numbers as the bodies' positions (a body moved
+                    // back has its proxy moved with it), read from contiguous memory.
+                    p = &set.proxies[i];
+                    end = {p->x, p->y, p->z};
+                    fast_start = p->start;
+                }
                 const GridProxy& q = set.proxies[j];
                 if (q.plane) {
                     const PlaneProxy& plane = *std::ranges::lower_bound(set.planes, j, {}, &PlaneProxy::index);
-                    touch.offer(first_touch_plane(end, fast_start, p.radius, plane.point, plane.normal), j);
+                    touch.offer(first_touch_plane(end, fast_start, p->radius, plane.point, plane.normal), j);
                     continue;
                 }
                 const Vector3 other_end{q.x, q.y, q.z};
-                const Vector3& other_start = starts[j];
-                if (!moved || spheres_may_touch(end, fast_start, p.radius, other_end, other_start, q.radius))
-                    touch.offer(first_touch_spheres(end, fast_start, p.radius, other_end, other_start, q.radius), j);
+                const Vector3& other_start = q.start;
+                if (!moved || spheres_may_touch(end, fast_start, p->radius, other_end, other_start, q.radius))
+                    touch.offer(first_touch_spheres(end, fast_start, p->radius, other_end, other_start, q.radius), j);
             }
         } else {
+            fast_start = starts[i];
             const RigidBody& body = bodies[i];
             if (body.is_immovable() || body.shape.kind != ShapeKind::sphere) continue;
             if (!(length(body.position - fast_start) > smallest_radius)) continue;
@@ -155,7 +158,7 @@ void sweep_fast_spheres(World& world) {
         RigidBody& fast = bodies[i];
         const double earliest = touch.fraction;
         const RigidBody& other = bodies[touch.partner];
-        const Vector3 other_start = starts[touch.partner];
+        const Vector3 other_start = use_grid ? set.proxies[touch.partner].start : starts[touch.partner];
         fast.position = fast_start + (fast.position - fast_start) * earliest;
         if (use_grid) {
             GridProxy& p = set.proxies[i];

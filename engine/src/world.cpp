@@ -92,7 +92,6 @@ double World::integrate_bodies(bool gather, bool swept) {
     const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
     if (gather) {
         proxies_.clear(count);
-        if (swept) proxies_.starts.resize(count);
     }
     double smallest_radius = std::numeric_limits<double>::infinity();
     double sum = 0.0;
@@ -118,15 +117,15 @@ double World::integrate_bodies(bool gather, bool swept) {
         sum += poison(body);
         if (!gather) continue;
         double travel = 0.0;
+        Vector3 start{};
         if (swept) {
-            const Vector3 start = start_of_step(body, dt, gravity_term);
-            proxies_.starts[i] = start;
+            start = start_of_step(body, dt, gravity_term);
             if (body.shape.kind == ShapeKind::sphere) {
                 travel = length(body.position - start);
                 smallest_radius = std::min(smallest_radius, body.shape.radius);
             }
         }
-        proxies_.add(body, i, travel);
+        proxies_.add(body, i, travel, start);
     }
     if (gather && swept) {
         proxies_.swept = true;

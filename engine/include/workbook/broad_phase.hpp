@@ -25,7 +25,7 @@ struct BodyPair {
     std::uint32_t second;  ///< the larger index
 };
 
-/// One body as the broad phase reads it: 48 bytes instead of a whole RigidBody (328), so
+/// One body as the broad phase reads it: 72 bytes instead of a whole RigidBody (328), so
 /// that the grid's passes stream through contiguous memory. Kept in body order, planes too.
 /// (Outside BroadPhase so that the API reference has no private nested class.)
 struct GridProxy {
@@ -34,6 +34,8 @@ struct GridProxy {
     double z = 0.0;             ///< centre, z, m
     double radius = 0.0;        ///< bounding radius, m (workbook::bounding_radius; unused for a plane)
     double travel = 0.0;        ///< how far a swept sphere moved this step, m; 0 for every other body
+    Vector3 start{};            ///< with a swept set: where the body started the step, m (next to its end,
+                                ///< so that the swept test reads both from one place)
     std::uint32_t index = 0;    ///< body index
     bool movable = false;       ///< false for an immovable body
     bool plane = false;         ///< a plane: unbounded, never in the grid
@@ -53,7 +55,6 @@ struct PlaneProxy {
 struct ProxySet {
     std::vector<GridProxy> proxies;   ///< every body, in body order
     std::vector<PlaneProxy> planes;   ///< the planes again, in body order, with their normals
-    std::vector<Vector3> starts;      ///< with `swept`: where each body started the step, by body index
     /// Also find the pairs the swept test must try: pairs with a fast sphere (travel greater than
     /// `fast_travel`) whose paths may come within touching distance.
     bool swept = false;
@@ -83,22 +84,23 @@ struct ProxySet {
         spheres = 0;
     }
 
-    /// Appends body `index` (the next one in body order), with the travel of a swept sphere.
-    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0) {
-        GridProxy& p = proxies.emplace_back();
-        p.index = index;
-        p.movable = !body.is_immovable();
+    /// Appends body `index` (the next one in body order), with the travel and start of a swept sphere.
+    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {}) {
         if (body.shape.kind == ShapeKind::plane) {
-            p.plane = true;
-            planes.push_back({index, p.movable, body.position, rotate(body.orientation, body.shape.normal)});
+            add_plane(body, index);
             return;
         }
+        GridProxy p;
         p.x = body.position.x;
         p.y = body.position.y;
         p.z = body.position.z;
-        p.radius = body.shape.kind == ShapeKind::sphere ? body.shape.radius : bounding_radius(body);
         p.sphere = body.shape.kind == ShapeKind::sphere;
+        p.radius = p.sphere ? body.shape.radius : bounding_radius(body);
         p.travel = travel;
+        p.start = start;
+        p.index = index;
+        p.movable = !body.is_immovable();
+        proxies.push_back(p);
         ++bounded;
         if (p.sphere) {
             ++spheres;
@@ -106,10 +108,13 @@ struct ProxySet {
         }
         // x * 0 is 0 for every finite x and NaN otherwise: one sum says whether all are finite.
         poison += (p.x + p.y + p.z + p.radius) * 0.0;
-        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+        low.x = std::min(low.x, p.x), low.y = std::min(low.y, p.y), low.z = std::min(low.z, p.z);
+        high.x = std::max(high.x, p.x), high.y = std::max(high.y, p.y), high.z = std::max(high.z, p.z);
         largest_radius = std::max(largest_radius, p.radius);
     }
+
+private:
+    void add_plane(const RigidBody& body, std::uint32_t index);
 };
 
 /// A uniform grid over the bodies' bounding spheres, rebuilt every step.
@@ -177,7 +182,6 @@ private:
     void finish(const ProxySet& set, std::vector<BodyPair>& pairs);
 
     std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
-    std::vector<Vector3> by_cell_start_;      ///< with a swept set, their starts, in the same order
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
     std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index

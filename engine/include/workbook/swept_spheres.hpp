@@ -51,6 +51,7 @@ inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, c
 
 /// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
 struct SweepScratch {
+    std::vector<Vector3> starts;         ///< without the grid: where each body started the step
     std::vector<std::uint32_t> moved;    ///< spheres moved back this step, in index order
     std::vector<std::uint8_t> is_moved;  ///< 1 for a sphere in `moved`, by body index
     std::vector<Contact> found;          ///< touching contacts found this step, one per moved sphere
