@@ -11,7 +11,7 @@ engine's N = 1 run, divided by N) and the relative drift of kinetic energy. It w
     OUT/performance.md the site's Performance page (docs/CMakeLists.txt reads it from here)
     FIGURES/speed.{svg,pdf,png}  time per step against N, log-log, in the shared style
 
-With --record it also copies all of them into bench/results/: the recorded run that the
+With --record it also copies them (the figure as SVG only) into bench/results/: the recorded run that the
 site shows when its build has not run the bench itself (docs/CMakeLists.txt), and that
 tests/bench/recorded_speed.py holds to the goals of issue 12.
 
@@ -282,9 +282,8 @@ def main():
         RESULTS.mkdir(exist_ok=True)
         for name in ["speed.csv", "speed.md", "performance.md"]:
             shutil.copyfile(args.out / name, RESULTS / name)
-        if not args.no_figure:
-            for ext in ["svg", "pdf", "png"]:
-                shutil.copyfile((args.figures or args.out) / f"speed.{ext}", RESULTS / f"speed.{ext}")
+        if not args.no_figure:  # the site's figure; the PDF and PNG stay in the build
+            shutil.copyfile((args.figures or args.out) / "speed.svg", RESULTS / "speed.svg")
         print(f"recorded in {RESULTS}", file=sys.stderr)
     print(table)
 
