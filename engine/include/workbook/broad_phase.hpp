@@ -170,7 +170,7 @@ public:
 private:
     /// Builds the grid over the bounded proxies; false when a position is not finite.
     bool build_grid(const ProxySet& set);
-    /// Walks the grid and the wide proxies, appending candidate pairs.
+    /// Walks the grid, appending candidate pairs.
     void collect_pairs(const ProxySet& set, bool immovable_pairs);
     /// Appends the pairs of the bounded proxies with the planes.
     void collect_plane_pairs(const ProxySet& set, bool immovable_pairs);
@@ -184,7 +184,7 @@ private:
     std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
-    std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
+    std::vector<std::uint32_t> wide_;         ///< slots in by_cell_ of the wide proxies (see build_grid())
     std::vector<std::uint32_t> large_;        ///< slots in by_cell_ of the large proxies
     std::vector<std::uint64_t> contact_keys_; ///< first << 32 | second, before sorting
     std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner entry) for the swept test, any order
@@ -199,6 +199,9 @@ private:
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
     double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
     double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
+    double wide_travel_ = 0.0;         ///< travel above which a proxy is wide, m
+    /// A proxy that travelled further than wide_travel_ (or a NaN): see build_grid().
+    [[nodiscard]] bool is_wide(const GridProxy& p) const { return !(p.travel <= wide_travel_); }
 };
 
 }  // namespace workbook

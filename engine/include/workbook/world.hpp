@@ -170,6 +170,8 @@ private:
     double correct_contacts();
     /// Fills proxies_ from the bodies as they stand (no swept test).
     void gather_proxies();
+    /// Appends body i to proxies_, with its start and travel when `swept` (see integrate_bodies()).
+    void gather_body(std::uint32_t i, bool swept, double dt, const Vector3& gravity_term, double& smallest_radius);
 
     std::vector<RigidBody> bodies_;
     std::vector<Contact> contacts_;
