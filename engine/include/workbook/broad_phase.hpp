@@ -132,7 +132,14 @@ private:
 /// are then sorted by (first, second), the order in which testing every pair visits them, so
 /// that sequential responders see contacts in the same order and the results are
 /// bit-identical to testing all pairs. Planes are unbounded and stay out of the grid: each
-/// body is paired with each plane its bounding sphere reaches.
+/// body is paired with each plane its bounding sphere reaches, visiting only the cells near it.
+///
+/// With a swept set the same walk finds the swept test's candidates: two spheres' paths can
+/// meet only if their ends lie within r_1 + t_1 + r_2 + t_2 (t the distance travelled). Cells
+/// are sized for the largest radius plus twice the mean travel, not for the fastest sphere,
+/// whose speed grows with N; a sphere reaching further ("large") searches the cells beyond
+/// its neighbours itself, and one that travelled more than four of the largest radii ("wide")
+/// searches as far as it reaches without widening anyone else's search.
 class BroadPhase {
 public:
     /// Finds, for the gathered `set`, every pair whose bounding spheres overlap (a conservative
