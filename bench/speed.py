@@ -11,6 +11,10 @@ engine's N = 1 run, divided by N) and the relative drift of kinetic energy. It w
     OUT/performance.md the site's Performance page (docs/CMakeLists.txt reads it from here)
     FIGURES/speed.{svg,pdf,png}  time per step against N, log-log, in the shared style
 
+With --record it also copies them (the figure as SVG only) into bench/results/: the recorded run that the
+site shows when its build has not run the bench itself (docs/CMakeLists.txt), and that
+tests/bench/recorded_speed.py holds to the goals of issue 12.
+
 Times are processor time of the timed steps (std::clock; every engine runs on one thread),
 which waiting for a core on a shared machine does not inflate; still, take the medians and
 compare engines only within one run. Runs are interleaved (each repetition runs every N and
@@ -23,6 +27,7 @@ import datetime
 import math
 import os
 import platform
+import shutil
 import statistics
 import subprocess
 import sys
@@ -31,6 +36,7 @@ from pathlib import Path
 
 BENCH = Path(__file__).resolve().parent
 STYLE = BENCH.parent / "plots" / "style.gp"
+RESULTS = BENCH / "results"
 ENGINES = ["workbook", "chipmunk", "box2d", "bullet"]
 TITLES = {"workbook": "workbook", "chipmunk": "Chipmunk 7", "box2d": "Box2D 2.4.1", "bullet": "Bullet 3.24"}
 STYLES = {"workbook": 2, "chipmunk": 3, "box2d": 4, "bullet": 12}  # line styles of plots/style.gp
@@ -248,6 +254,7 @@ def main():
     parser.add_argument("--peers-up-to", type=int, default=10**9,
                         help="run the peers only up to this N (on a busy machine they take minutes beyond)")
     parser.add_argument("--no-figure", action="store_true")
+    parser.add_argument("--record", action="store_true", help=f"also copy the results into {RESULTS}")
     args = parser.parse_args()
 
     engines = args.engines or available_engines(args.gas)
@@ -271,6 +278,13 @@ def main():
     (args.out / "performance.md").write_text(PAGE.format(table=table))
     if not args.no_figure:
         figure(rows, args.figures or args.out, engines)
+    if args.record:
+        RESULTS.mkdir(exist_ok=True)
+        for name in ["speed.csv", "speed.md", "performance.md"]:
+            shutil.copyfile(args.out / name, RESULTS / name)
+        if not args.no_figure:  # the site's figure; the PDF and PNG stay in the build
+            shutil.copyfile((args.figures or args.out) / "speed.svg", RESULTS / "speed.svg")
+        print(f"recorded in {RESULTS}", file=sys.stderr)
     print(table)
 
 

@@ -109,11 +109,12 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // larger gas is faster: 11.6 m/s of 1,000, 13.8 m/s of 100,000) and fill with pairs to
     // test, so they are sized for r + 2 t of the mean travel; the spheres that reach further
     // are "large" and look beyond their neighbouring cells for partners (in the gas 1 in 20).
-    // A sphere that travelled more than four of the largest radii is "wide": kept out of the
-    // grid and tried against every body, as it would widen the search of every large sphere.
-    wide_.clear();
-    if (wide_.capacity() < bounded) wide_.reserve(bounded);
+    // A sphere that travelled more than four of the largest radii is "wide": it looks as far
+    // as it must for partners, but the others do not look as far for it, as that would widen
+    // the search of every large sphere (at N = 100,000 the gas has about 20, some 12 m/s fast;
+    // tried against every body instead, they cost the step a fifth of its time).
     const double wide_travel = 4.0 * largest;
+    wide_travel_ = wide_travel;
     double small_reach = largest;
     if (set.swept) {
         const double mean_travel = set.spheres > 0 ? set.travel_sum / static_cast<double>(set.spheres) : 0.0;
@@ -171,11 +172,6 @@ bool BroadPhase::build_grid(const ProxySet& set) {
             cell_of_[k] = not_in_grid;
             continue;
         }
-        if (set.swept && !(p.travel <= wide_travel)) {  // NaN too
-            cell_of_[k] = not_in_grid;
-            wide_.push_back(p.index);
-            continue;
-        }
         const std::uint64_t c = (axis_cell(p.z, lo[2], nz) * ny + axis_cell(p.y, lo[1], ny)) * nx + axis_cell(p.x, lo[0], nx);
         cell_of_[k] = static_cast<std::uint32_t>(c);
         ++cell_start_[c + 1];
@@ -187,8 +183,10 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // indirection through an index array made the pass 1.6 times slower). cell_start_[c] walks
     // forward while filling; afterwards cell c spans [old start of c, start of c + 1).
     large_.clear();
+    wide_.clear();
     // Room for every proxy (4 bytes each): how many are large changes from step to step.
     if (large_.capacity() < in_grid) large_.reserve(in_grid);
+    if (wide_.capacity() < in_grid) wide_.reserve(in_grid);
     largest_reach_ = largest;
     for (std::size_t k = 0; k < set.proxies.size(); ++k) {
         if (cell_of_[k] == not_in_grid) continue;
@@ -197,8 +195,12 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         by_cell_[slot] = with_fast_flag(set, p);
         if (!set.swept) continue;
         const double own_reach = p.radius + p.travel;
+        if (!(own_reach <= small_reach)) large_.push_back(slot);  // NaN too
+        if (is_wide(p)) {
+            wide_.push_back(slot);
+            continue;
+        }
         largest_reach_ = std::max(largest_reach_, own_reach);
-        if (own_reach > small_reach) large_.push_back(slot);
     }
     for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
     cell_start_[0] = 0;
@@ -269,11 +271,14 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
         }
     }
 
-    auto is_large = [this](const GridProxy& q) { return q.radius + q.travel > small_reach_; };
-    // Large spheres against the cells beyond their neighbours, as far as a partner may be
-    // (pairs of two large ones once: from the one of smaller index).
+    auto is_large = [this](const GridProxy& q) { return !(q.radius + q.travel <= small_reach_); };
+    // Large spheres against the cells beyond their neighbours, as far as a partner may be: its
+    // own reach and the largest of any sphere that is not wide. A pair of two large spheres that
+    // are not wide is tried from the one of smaller index (each one's search holds the other); a
+    // wide partner is left to its own search, and two wide ones meet in the loop after this.
     for (const std::uint32_t s : large_) {
         const GridProxy& p = proxies[s];
+        const bool p_wide = is_wide(p);
         const double far = ((p.radius + p.travel + largest_reach_) * (1.0 + 1e-9) + slack) * inverse_cell_ * (1.0 + 1e-9);
         const std::uint64_t k = far < 1e15 ? static_cast<std::uint64_t>(far) + 1 : std::uint64_t{1} << 50;
         const std::uint64_t cx = axis_cell_of(p.x, 0), cy = axis_cell_of(p.y, 1), cz = axis_cell_of(p.z, 2);
@@ -283,8 +288,10 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
             for (std::uint64_t y = low_end(cy); y <= std::min(cy + k, ny - 1); ++y) {
                 const std::uint64_t row = (z * ny + y) * nx;
                 auto scan = [&](std::uint64_t from, std::uint64_t to) {  // cells [from, to] of the row
-                    for (std::uint32_t t = start[row + from]; t < start[row + to + 1]; ++t)
-                        if (!(proxies[t].index < p.index && is_large(proxies[t]))) pair(p, proxies[t]);
+                    for (std::uint32_t t = start[row + from]; t < start[row + to + 1]; ++t) {
+                        const GridProxy& q = proxies[t];
+                        if (!is_large(q) || (p_wide && !is_wide(q)) || (!is_wide(q) && p.index < q.index)) pair(p, q);
+                    }
                 };
                 const bool near = (z + 1 >= cz && z <= cz + 1) && (y + 1 >= cy && y <= cy + 1);
                 if (!near) {
@@ -298,13 +305,15 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
         }
     }
 
-    // Wide spheres against every other bounded body (wide pairs once).
-    for (std::uint32_t w : wide_) {
-        const GridProxy p = with_fast_flag(set, set.proxies[w]);
-        for (const GridProxy& other : set.proxies) {
-            if (other.plane || other.index == w) continue;
-            if (cell_of_[other.index] == not_in_grid && other.index < w) continue;  // met from the other's side
-            pair(p, with_fast_flag(set, other));
+    // Pairs of wide spheres (a handful), except those in neighbouring cells, walked above.
+    for (std::size_t a = 0; a < wide_.size(); ++a) {
+        const GridProxy& p = proxies[wide_[a]];
+        const std::uint64_t px = axis_cell_of(p.x, 0), py = axis_cell_of(p.y, 1), pz = axis_cell_of(p.z, 2);
+        for (std::size_t b = a + 1; b < wide_.size(); ++b) {
+            const GridProxy& q = proxies[wide_[b]];
+            auto near = [](std::uint64_t u, std::uint64_t v) { return u + 1 >= v && v + 1 >= u; };
+            if (near(px, axis_cell_of(q.x, 0)) && near(py, axis_cell_of(q.y, 1)) && near(pz, axis_cell_of(q.z, 2))) continue;
+            pair(p, q);
         }
     }
     collect_plane_pairs(set, immovable_pairs);
@@ -327,7 +336,6 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
     const std::uint64_t nx = cells_[0], ny = cells_[1], nz = cells_[2];
     const double cell = 1.0 / inverse_cell_;
     for (const PlaneProxy& u : set.planes) {
-        for (std::uint32_t w : wide_) test(with_fast_flag(set, set.proxies[w]), u);
         // Only the cells that come near the plane: along a row of cells the height of a cell's
         // centre grows by n_x * cell from one cell to the next, and no point of a cell lies lower
         // than its centre's height minus (|n_x| + |n_y| + |n_z|) cell / 2. A cell whose lowest

@@ -132,7 +132,14 @@ private:
 /// are then sorted by (first, second), the order in which testing every pair visits them, so
 /// that sequential responders see contacts in the same order and the results are
 /// bit-identical to testing all pairs. Planes are unbounded and stay out of the grid: each
-/// body is paired with each plane its bounding sphere reaches.
+/// body is paired with each plane its bounding sphere reaches, visiting only the cells near it.
+///
+/// With a swept set the same walk finds the swept test's candidates: two spheres' paths can
+/// meet only if their ends lie within r_1 + t_1 + r_2 + t_2 (t the distance travelled). Cells
+/// are sized for the largest radius plus twice the mean travel, not for the fastest sphere,
+/// whose speed grows with N; a sphere reaching further ("large") searches the cells beyond
+/// its neighbours itself, and one that travelled more than four of the largest radii ("wide")
+/// searches as far as it reaches without widening anyone else's search.
 class BroadPhase {
 public:
     /// Finds, for the gathered `set`, every pair whose bounding spheres overlap (a conservative
@@ -170,7 +177,7 @@ public:
 private:
     /// Builds the grid over the bounded proxies; false when a position is not finite.
     bool build_grid(const ProxySet& set);
-    /// Walks the grid and the wide proxies, appending candidate pairs.
+    /// Walks the grid, appending candidate pairs.
     void collect_pairs(const ProxySet& set, bool immovable_pairs);
     /// Appends the pairs of the bounded proxies with the planes.
     void collect_plane_pairs(const ProxySet& set, bool immovable_pairs);
@@ -184,7 +191,7 @@ private:
     std::vector<GridProxy> by_cell_;          ///< bounded proxies grouped by cell
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_
-    std::vector<std::uint32_t> wide_;         ///< proxies too large for the grid's cells, by index
+    std::vector<std::uint32_t> wide_;         ///< slots in by_cell_ of the wide proxies (see build_grid())
     std::vector<std::uint32_t> large_;        ///< slots in by_cell_ of the large proxies
     std::vector<std::uint64_t> contact_keys_; ///< first << 32 | second, before sorting
     std::vector<BodyPair> sweep_pairs_;       ///< (fast sphere, partner entry) for the swept test, any order
@@ -199,6 +206,9 @@ private:
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
     double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
     double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
+    double wide_travel_ = 0.0;         ///< travel above which a proxy is wide, m
+    /// A proxy that travelled further than wide_travel_ (or a NaN): see build_grid().
+    [[nodiscard]] bool is_wide(const GridProxy& p) const { return !(p.travel <= wide_travel_); }
 };
 
 }  // namespace workbook
