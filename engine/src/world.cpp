@@ -193,7 +193,7 @@ void World::add_contact_if_any(std::uint32_t i, std::uint32_t j) {
 
 void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
     // Spheres and planes are tested and written from the proxies, which hold the same numbers
-    // as the bodies in 48 contiguous bytes: the pairs' bodies are not read at all (at
+    // as the bodies in 72 contiguous bytes: the pairs' bodies are not read at all (at
     // N = 100,000 each read of a body missed every cache). Boxes take the bodies' path.
     const GridProxy& a = proxies_.proxies[i];
     const GridProxy& b = proxies_.proxies[j];

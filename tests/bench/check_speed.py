@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Keeps `./workbook bench speed` from rotting without timing anything: runs bench/speed.py
-on a small gas (N = 100 and 300, 60 steps, one repetition) with every engine workbook-gas
-was built with, and checks the shape of what it writes and that each engine's gas keeps
+on a small gas (N = 100 and 300, 60 steps, one repetition; the peers at N = 100 alone, so that
+the rows of runs not made are written too) with every engine workbook-gas was built with, and
+checks the shape of what it writes and that each engine's gas keeps
 what it should: every disc inside the box, the energy finite, and the workbook's energy
 to rounding (the peers' iterative solvers are not held to that; their drift is reported)."""
 
@@ -25,7 +26,9 @@ def main():
     with tempfile.TemporaryDirectory() as out:
         out = Path(out)
         result = subprocess.run([sys.executable, str(SOURCE / "bench" / "speed.py"), "--gas", args.gas, "--out", str(out),
-                                 "--sizes", ",".join(map(str, SIZES)), "--repeat", "1", "--steps", "60", "--no-figure"],
+                                 "--sizes", ",".join(map(str, SIZES)), "--repeat", "1", "--steps", "60", "--no-figure",
+                                 # the peers only at the smaller N: the rows of runs not made are written too
+                                 "--peers-up-to", str(SIZES[0])],
                                 capture_output=True, text=True, timeout=120)
         if result.returncode != 0:
             sys.exit(f"bench/speed.py failed:\n{result.stderr}")
@@ -35,7 +38,7 @@ def main():
         print(f"engines built: {', '.join(engines)}")
         if "workbook" not in engines:
             failures.append("the workbook's own engine is missing from speed.csv")
-        expected = ["engine", "n", "steps", "repeats", "ms_per_step", "ms_per_step_min", "ms_per_step_max",
+        expected = ["engine", "n", "steps", "repeats", "ms_per_step", "ms_per_step_median", "ms_per_step_max",
                     "bytes_per_body", "energy_drift", "escaped"]
         if list(rows[0].keys()) != expected:
             failures.append(f"speed.csv columns {list(rows[0].keys())}, expected {expected}")
@@ -43,12 +46,19 @@ def main():
             failures.append(f"{len(rows)} rows, expected one per engine and N ({len(engines)} x {len(SIZES)})")
         for r in rows:
             where = f"{r['engine']} at N = {r['n']}"
+            if r["engine"] != "workbook" and int(r["n"]) > SIZES[0]:
+                if r["repeats"] != "0" or r["ms_per_step"] != "nan":
+                    failures.append(f"{where}: above --peers-up-to, expected a row of a run not made, got {r}")
+                continue
             if r["repeats"] != "1" or r["steps"] != "60":
                 failures.append(f"{where}: ran {r['repeats']} times {r['steps']} steps, expected once, 60 steps")
                 continue
             ms, drift = float(r["ms_per_step"]), float(r["energy_drift"])
             if not (math.isfinite(ms) and ms > 0):
                 failures.append(f"{where}: time per step {r['ms_per_step']}, expected a positive number")
+            # The headline is the fastest run; the median and the slowest are never below it.
+            if not ms <= float(r["ms_per_step_median"]) <= float(r["ms_per_step_max"]):
+                failures.append(f"{where}: fastest {ms}, median {r['ms_per_step_median']}, slowest {r['ms_per_step_max']} out of order")
             if not math.isfinite(drift):
                 failures.append(f"{where}: energy drift {r['energy_drift']} is not finite")
             if r["escaped"] != "0":
@@ -56,8 +66,11 @@ def main():
             if r["engine"] == "workbook" and drift > 1e-12:
                 failures.append(f"{where}: energy drift {drift:.3e} over 60 elastic steps, expected rounding (<= 1e-12)")
         table = (out / "speed.md").read_text()
+        if len(engines) > 1 and "not run" not in table:
+            failures.append("speed.md does not say which peers were not run at the larger N")
         page = (out / "performance.md").read_text()
         for needle, text, name in [("| N | steps |", table, "speed.md"), ("growth with N", table, "speed.md"),
+                                   ("the fastest of 1 runs", table, "speed.md"),
                                    ("{#performance}", page, "performance.md"), ("Measured ", page, "performance.md")]:
             if needle not in text:
                 failures.append(f"{name} lacks '{needle}'")
