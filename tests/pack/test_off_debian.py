@@ -2,13 +2,17 @@
 """Off Debian: ./workbook looks for its tools before it thinks of apt. With every tool there
 and neither apt nor dpkg, it goes on; with a tool missing it prints what to install on
 Fedora, Arch and macOS (Homebrew), goes on when only optional tools are missing and stops
-when a tool every command needs is. And the student edition builds and checks with Clang
-alone: PATH without apt-get, dpkg, gcc or g++, and CXX=clang++.
+when a tool every command needs is. And the student edition, written from scratch, runs its
+README's quick start (the book, a chapter's figures, the test command) and checks every
+chapter with Clang alone: PATH without apt-get, dpkg, gcc or g++, and CXX=clang++. This is the
+suite's one build of a pack (test_student_pack.py checks what a pack holds): the sources are
+the ones this tree builds with GCC, so a second build with GCC would prove little more.
 
 The "system without apt" is this machine seen through a PATH of links to every program on
 it except those hidden, so no container is needed."""
 import os
 import pathlib
+import re
 import subprocess
 import sys
 import tempfile
@@ -84,10 +88,26 @@ class OffDebian(unittest.TestCase):
         self.assertIn("sudo dnf install cmake ninja-build", run.stderr)
         self.assertIn("brew install cmake ninja", run.stderr)
 
-    def test_the_student_edition_builds_from_scratch_and_checks_with_clang_alone(self):
+    def test_the_student_edition_runs_its_quick_start_and_checks_with_clang_alone(self):
         pack = self.root / "workbook-student"
         pack_student.write_pack(pack)
         env = self.env("clang-alone", GCC, CXX="clang++")
+        first_chapter = workbook_files.chapters(pack)[0]
+        # The quick start of the pack's README. The test command's sanitizer half builds and
+        # runs the same sources as this tree's own sanitizer half, so here it would only double
+        # the suite's time.
+        for command in (["book"], ["figures", first_chapter], ["test", "--without-sanitizers"]):
+            run = self.workbook(pack, env, *command, timeout=1800)
+            self.assertEqual(run.returncode, 0, f"{' '.join(command)} failed in the pack:\n{(run.stdout + run.stderr)[-3000:]}")
+            if command == ["book"]:
+                self.assertIn("g++ not found: build/dev uses clang++", run.stderr)
+        self.assertIn("tests: ", run.stdout)
+        self.assertIn(" 0 failed", run.stdout)
+        html = pack / "build/dev/book/site/html"
+        self.assertTrue((html / "chapter_inelastic.html").is_file(), "the site has no chapter 1 page")
+        self.assert_site_cites_only_what_the_pack_has(html)
+        self.assertTrue((pack / "build/dev/book/figures/inelastic/head-on-carts.student.svg").is_file(),
+                        "the pack draws its figures from the student's code")
         for chapter in workbook_files.chapters(pack):
             run = self.workbook(pack, env, "check", chapter, timeout=1500)
             output = run.stdout + run.stderr
@@ -116,8 +136,15 @@ class OffDebian(unittest.TestCase):
         scene = next((pack / "chapters").glob("*/scenes/*.json"))
         run = self.workbook(pack, env, "run", str(scene), timeout=1500)
         self.assertEqual(run.returncode, 0, (run.stdout + run.stderr)[-3000:])
-        self.assertIn("g++ not found: build/dev uses clang++", run.stderr)
         self.assertIn("total energy", run.stdout)
+
+    def assert_site_cites_only_what_the_pack_has(self, html):
+        """No page of the pack's site names a file, folder or option the pack does not have."""
+        absent = [prefix + "/" for prefix in pack_student.EXCLUDED] + ["--solutions", "--student", "adding_a_chapter"]
+        for page in html.glob("*.html"):
+            text = re.sub(r"<[^>]+>", "", page.read_text(errors="replace"))
+            for name in absent:
+                self.assertNotIn(name, text, f"{page.name} of the student edition's site cites {name}")
 
 
 if __name__ == "__main__":
