@@ -203,10 +203,21 @@ def figure(rows, figures, engines):
     blocks, plots = [], []
     for e in engines:
         points = [f"{r['n']},{r['ms_per_step']}" for r in rows if r["engine"] == e and r["repeats"]]
+        # A peer without a result at some N (it failed or ran out of time) says so in the key,
+        # rather than leaving its line to end without a word.
+        missing = [f"{r['n']:,}" for r in rows
+                   if r["engine"] == e and not r["repeats"] and (e == "workbook" or r["n"] <= PEERS_UP_TO[0])]
+        title = TITLES[e] + (f" (no result at N = {', '.join(missing)})" if missing else "")
         blocks += [f"${e} << EOD", *points, "EOD"]
-        plots.append(f"${e} using 1:2 with linespoints ls {STYLES[e]} pt 7 ps 0.8 title '{TITLES[e]}'")
+        plots.append(f"${e} using 1:2 with linespoints ls {STYLES[e]} pt 7 ps 0.8 title '{title}'")
+    # Ranges with room around the points: gnuplot's own log ranges run to whole decades, which
+    # left the smallest N far from the left edge and the fastest time on the bottom axis.
+    measured = [(r["n"], float(r["ms_per_step"])) for r in rows if r["repeats"]]
+    n_low, n_high = min(n for n, _ in measured), max(n for n, _ in measured)
+    t_low, t_high = min(t for _, t in measured), max(t for _, t in measured)
     body = "\n".join([
         "set logscale xy", "set format x '10^{%T}'", "set format y '10^{%T}'",
+        f"set xrange [{n_low / 1.25:g}:{n_high * 1.25:g}]", f"set yrange [{t_low / 2:g}:{t_high * 2:g}]",
         "set xlabel 'N / bodies' font label_font", "set ylabel 'time per step / ms' font label_font",
         "set title 'The 2D gas of issue 12: time per step against N' font title_font",
         "set key inside top left vertical Left reverse",
@@ -218,6 +229,12 @@ def figure(rows, figures, engines):
     result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
     if result.returncode != 0 or result.stderr.strip():
         raise RuntimeError(f"gnuplot:\n{result.stderr.strip()}")
+
+
+def read_rows(csv_path):
+    """The rows of a speed.csv, with N and the number of runs as numbers again."""
+    with open(csv_path, newline="") as f:
+        return [{**r, "n": int(r["n"]), "repeats": int(r["repeats"])} for r in csv.DictReader(f)]
 
 
 PAGE = """# Performance {{#performance}}
@@ -269,7 +286,16 @@ def main():
                         help="run the peers only up to this N (on a busy machine they take minutes beyond)")
     parser.add_argument("--no-figure", action="store_true")
     parser.add_argument("--record", action="store_true", help=f"also copy the results into {RESULTS}")
+    parser.add_argument("--redraw", action="store_true",
+                        help="run nothing: draw the figure again from OUT/speed.csv (with --record, copy it too)")
     args = parser.parse_args()
+    if args.redraw:
+        rows = read_rows(args.out / "speed.csv")
+        PEERS_UP_TO[0] = args.peers_up_to
+        figure(rows, args.figures or args.out, [e for e in ENGINES if any(r["engine"] == e for r in rows)])
+        if args.record:
+            shutil.copyfile((args.figures or args.out) / "speed.svg", RESULTS / "speed.svg")
+        return
 
     engines = args.engines or available_engines(args.gas)
     missing = [e for e in ENGINES if e not in engines]
