@@ -170,10 +170,20 @@ def load_average():
         return "unknown"
 
 
-def markdown(rows, engines, sizes, repeat, when, load):
-    lines = [f"Measured {when} on {machine()}, load average {load[0]} at the start and {load[1]} at the end; "
-             f"each time is the fastest of {repeat} runs "
-             "(processor time, each run in its own process; the machine is shared, so compare engines within this table only).", ""]
+def measured_line(repeat, when, load):
+    """The table's first line: when, where and how the run was made."""
+    return (f"Measured {when} on {machine()}, load average {load[0]} at the start and {load[1]} at the end; "
+            f"each time is the fastest of {repeat} runs "
+            "(processor time, each run in its own process; the machine is shared, so compare engines within this table only).")
+
+
+def three_digits(x):
+    """x to 3 significant digits, keeping trailing zeros (0.100, not 0.1) but no bare point (128)."""
+    return f"{x:#.3g}".rstrip(".") if abs(x) < 1e3 else f"{x:.3g}"
+
+
+def markdown(rows, engines, sizes, measured):
+    lines = [measured, ""]
     head = "| N | steps |" + "".join(f" {TITLES[e]} ms/step |" for e in engines)
     lines += [head, "|" + "---|" * (2 + len(engines))]
     by = {(r["engine"], r["n"]): r for r in rows}
@@ -181,8 +191,8 @@ def markdown(rows, engines, sizes, repeat, when, load):
         cells = [f"{n:,}", str(by[(engines[0], n)]["steps"])]
         for e in engines:
             r = by[(e, n)]
-            cells.append(("not run" if e != "workbook" and n > PEERS_UP_TO[0] else "failed") if not r["repeats"]
-                         else f"{float(r['ms_per_step']):.3g}")
+            cells.append(("not run" if e != "workbook" and n > PEERS_UP_TO[0] else "no result") if not r["repeats"]
+                         else three_digits(float(r["ms_per_step"])))
         lines.append("| " + " | ".join(cells) + " |")
     growths = [growth(rows, e) for e in engines]
     lines.append("| growth with N (smallest to largest N run) | |" +
@@ -266,7 +276,10 @@ a step already costs it one pass of arithmetic that leaves it as it was.
 Memory is the peak resident size of the run minus that of the same engine with one body,
 divided by N. Energy drift is \\f$|E_\\text{{end}} - E_\\text{{start}}| / E_\\text{{start}}\\f$ of
 the kinetic energy: the workbook's elastic impulse keeps it at rounding level, the peers'
-iterative solvers (in single precision for Box2D and Bullet) do not.
+iterative solvers (in single precision for Box2D and Bullet) do not. A cell reads *no result*
+where a peer's runs failed or did not finish within the bench's limit (`--timeout`, 300 s a run
+by default), and *not run* where the bench was told to leave the peers out at that N
+(`--peers-up-to`).
 
 \\image html bench/speed.svg "Time per step against the number of bodies N, log-log: a slope of 1 is linear cost."
 """
@@ -286,15 +299,17 @@ def main():
                         help="run the peers only up to this N (on a busy machine they take minutes beyond)")
     parser.add_argument("--no-figure", action="store_true")
     parser.add_argument("--record", action="store_true", help=f"also copy the results into {RESULTS}")
-    parser.add_argument("--redraw", action="store_true",
-                        help="run nothing: draw the figure again from OUT/speed.csv (with --record, copy it too)")
+    parser.add_argument("--rewrite", action="store_true",
+                        help="run nothing: write the table, the page and the figure again from OUT/speed.csv and the "
+                             "first line of OUT/speed.md (when and where the run was made), after a change to how "
+                             "they are written; with --record, copy them too")
     args = parser.parse_args()
-    if args.redraw:
+    PEERS_UP_TO[0] = args.peers_up_to
+    if args.rewrite:
         rows = read_rows(args.out / "speed.csv")
-        PEERS_UP_TO[0] = args.peers_up_to
-        figure(rows, args.figures or args.out, [e for e in ENGINES if any(r["engine"] == e for r in rows)])
-        if args.record:
-            shutil.copyfile((args.figures or args.out) / "speed.svg", RESULTS / "speed.svg")
+        measured = (args.out / "speed.md").read_text().splitlines()[0]
+        write_results(rows, [e for e in ENGINES if any(r["engine"] == e for r in rows)],
+                      sorted({r["n"] for r in rows}), measured, args)
         return
 
     engines = args.engines or available_engines(args.gas)
@@ -302,7 +317,6 @@ def main():
     if missing and not args.engines:
         print(f"bench: not built with {', '.join(missing)} (their Debian packages are missing)", file=sys.stderr)
     when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    PEERS_UP_TO[0] = args.peers_up_to
     load_before = load_average()
     rows = measure(args.gas, engines, args.sizes, args.repeat, args.steps, args.timeout, args.peers_up_to)
     load = (load_before, load_average())
@@ -313,7 +327,12 @@ def main():
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    table = markdown(rows, engines, args.sizes, args.repeat, when, load)
+    write_results(rows, engines, args.sizes, measured_line(args.repeat, when, load), args)
+
+
+def write_results(rows, engines, sizes, measured, args):
+    """The table, the page and the figure of `rows`; with --record, copies into bench/results/."""
+    table = markdown(rows, engines, sizes, measured)
     (args.out / "speed.md").write_text(table)
     (args.out / "performance.md").write_text(PAGE.format(table=table))
     if not args.no_figure:

@@ -78,6 +78,12 @@ def main():
         if len(engines) > 1 and "not run" not in table:
             failures.append("speed.md does not say which peers were not run at the larger N")
         page = (out / "performance.md").read_text()
+        # --rewrite writes the same table again from the CSV and the table's first line.
+        rewrite = subprocess.run([sys.executable, str(SOURCE / "bench" / "speed.py"), "--gas", args.gas, "--out", str(out),
+                                  "--peers-up-to", str(SIZES[0]), "--rewrite", *FIGURE],
+                                 capture_output=True, text=True, timeout=120)
+        if rewrite.returncode != 0 or (out / "speed.md").read_text() != table:
+            failures.append(f"--rewrite did not write the same table again:\n{rewrite.stderr[-2000:]}")
         for needle, text, name in [("| N | steps |", table, "speed.md"), ("growth with N", table, "speed.md"),
                                    ("the fastest of 1 runs", table, "speed.md"),
                                    ("{#performance}", page, "performance.md"), ("Measured ", page, "performance.md")]:
