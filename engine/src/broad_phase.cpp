@@ -195,7 +195,9 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         by_cell_[slot] = with_fast_flag(set, p);
         if (!set.swept) continue;
         const double own_reach = p.radius + p.travel;
-        if (!(own_reach <= small_reach)) large_.push_back(slot);  // NaN too
+        // A wide sphere is large too, whatever its reach: it makes its own search, and nobody
+        // else's search takes it in (is_large() below), so that each pair is met once.
+        if (!(own_reach <= small_reach) || is_wide(p)) large_.push_back(slot);  // NaN too
         if (is_wide(p)) {
             wide_.push_back(slot);
             continue;
@@ -271,7 +273,7 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
         }
     }
 
-    auto is_large = [this](const GridProxy& q) { return !(q.radius + q.travel <= small_reach_); };
+    auto is_large = [this](const GridProxy& q) { return !(q.radius + q.travel <= small_reach_) || is_wide(q); };
     // Large spheres against the cells beyond their neighbours, as far as a partner may be: its
     // own reach and the largest of any sphere that is not wide. A pair of two large spheres that
     // are not wide is tried from the one of smaller index (each one's search holds the other); a

@@ -144,7 +144,19 @@ namespace {
 /// fast that it crosses the box in a step (kept out of the grid's cells, tried against all).
 /// With `mixed`, larger balls, most of them slow and one in twenty fast: those travel further
 /// than the cells, which are sized for the mean travel, and look for partners beyond them.
-std::vector<RigidBody> fast_crowd(std::uint64_t seed, bool mixed) {
+/// Which speeds and sizes fast_crowd() gives its balls.
+enum class Speeds {
+    fast,     ///< every ball at up to 8 m/s per axis, small radii
+    mixed,    ///< one ball in 20 at up to 15 m/s, the others at 1, larger radii
+    /// Radii 1 cm and 6 cm, the small balls at 14.5 to 16 m/s, the large ones at 7.2 to 14.4:
+    /// in the first steps, at 1/60 s, the small ones travel more than four of the largest radii
+    /// (0.24 m) yet reach less than the grid's cells are sized for (wide but not large), while
+    /// the fastest large ones reach further without being wide (see BroadPhase::build_grid()).
+    spread,
+};
+
+std::vector<RigidBody> fast_crowd(std::uint64_t seed, Speeds speeds) {
+    const bool mixed = speeds == Speeds::mixed;
     SeededRandom random(seed);
     std::vector<RigidBody> bodies;
     const double half = 2.0;
@@ -153,7 +165,17 @@ std::vector<RigidBody> fast_crowd(std::uint64_t seed, bool mixed) {
         if (i == 300) bodies.push_back(make_immovable_plane({1, 0, 0}, {-half, 0, 0}));
         const Vector3 at = random.vector(half * 0.95);
         if (i % 25 == 7) {
-            bodies.push_back(make_immovable_sphere(random.uniform(0.02, 0.08), at));
+            // (Small for the spread: a larger one would widen every ball's cell.)
+            bodies.push_back(make_immovable_sphere(speeds == Speeds::spread ? 0.01 : random.uniform(0.02, 0.08), at));
+            continue;
+        }
+        if (speeds == Speeds::spread) {
+            const bool small = i % 2 == 0;
+            const double radius = small ? 0.01 : 0.06;
+            const Vector3 direction = random.vector(1.0);
+            const double speed = small ? random.uniform(14.5, 16.0) : random.uniform(7.2, 14.4);
+            const Vector3 velocity = direction * (speed / std::max(length(direction), 1e-9));
+            bodies.push_back(make_sphere(random.uniform(0.5, 2.0), radius, at, velocity));
             continue;
         }
         const double speed = !mixed ? 8.0 : i % 20 == 0 ? 15.0 : 1.0;
@@ -177,16 +199,17 @@ TEST_CASE("the swept test finds with the grid what it finds trying every body, s
     struct Variant {
         const char* name;
         WorldSettings settings;
-        bool mixed;
+        Speeds speeds;
     };
     const Variant variants[] = {
-        {"no gravity", WorldSettings{1.0 / 60.0, {}}, false},
-        {"gravity, exact-under-gravity", WorldSettings{1.0 / 60.0, {0, -9.81, 0}, Integrator::exact_under_gravity}, false},
-        {"mixed speeds", WorldSettings{1.0 / 60.0, {}}, true},
+        {"no gravity", WorldSettings{1.0 / 60.0, {}}, Speeds::fast},
+        {"gravity, exact-under-gravity", WorldSettings{1.0 / 60.0, {0, -9.81, 0}, Integrator::exact_under_gravity}, Speeds::fast},
+        {"mixed speeds", WorldSettings{1.0 / 60.0, {}}, Speeds::mixed},
+        {"speeds spread across the wide limit", WorldSettings{1.0 / 60.0, {}}, Speeds::spread},
     };
     for (const Variant& variant : variants) {
         CAPTURE(variant.name);
-        const std::vector<RigidBody> bodies = fast_crowd(seed, variant.mixed);
+        const std::vector<RigidBody> bodies = fast_crowd(seed, variant.speeds);
         World grid(bodies, variant.settings, bouncing);
         World every_body(bodies, variant.settings, bouncing);
         every_body.set_shortcuts({.broad_phase = false});
@@ -256,4 +279,46 @@ TEST_CASE("a sphere that travels past its neighbouring cells still finds what it
         CHECK(grid.contacts()[0].body2 == 101);
         CHECK(state_hash(grid) == state_hash(every_body));
     }
+}
+
+TEST_CASE("each fast sphere's swept partners are listed once, wide and large alike", "[broad_phase][swept]") {
+    // The spread crowd's first step, gathered as the world gathers it: every sphere's start and
+    // how far it went in 1/60 s. Wide spheres (that travelled more than four of the largest
+    // radii) that reach less than the cells are sized for make their own search; a pair met by
+    // two searches would be traced twice.
+    const std::uint64_t seed = workbook::testing::run_seed();
+    CAPTURE(seed);
+    const double dt = 1.0 / 60.0;
+    std::vector<RigidBody> bodies = fast_crowd(seed, Speeds::spread);
+    ProxySet set;
+    set.clear(bodies.size());
+    double smallest_radius = std::numeric_limits<double>::infinity();
+    std::size_t wide = 0;
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        RigidBody& body = bodies[i];
+        const Vector3 start = body.position;
+        body.position += body.velocity * dt;
+        const bool sphere = body.shape.kind == ShapeKind::sphere;
+        const double travel = sphere ? length(body.position - start) : 0.0;
+        if (sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
+        wide += travel > 4.0 * 0.06 ? 1 : 0;
+        set.add(body, i, travel, start);
+    }
+    set.swept = true;
+    set.fast_travel = smallest_radius;
+    BroadPhase broad_phase;
+    std::vector<BodyPair> pairs;
+    broad_phase.find_pairs(set, pairs);
+    REQUIRE(broad_phase.has_grid());
+    CHECK(wide > 100);  // the small balls, at 14.5 m/s and more
+    std::size_t listed = 0;
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        std::vector<std::uint32_t> partners;
+        for (const std::uint32_t entry : broad_phase.sweep_partners(i)) partners.push_back(entry & BroadPhase::partner_index);
+        std::ranges::sort(partners);
+        CAPTURE(i);
+        CHECK(std::adjacent_find(partners.begin(), partners.end()) == partners.end());
+        listed += partners.size();
+    }
+    CHECK(listed > 1000);
 }
