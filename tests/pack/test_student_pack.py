@@ -13,7 +13,6 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "grader"))
 import pack_student  # noqa: E402
 
-
 # Answers live in C++: the reference, hidden tests and mutants. (The grader and the hostile
 # submissions are kept out of the pack by the file-list test; they hold no answer, and their
 # boilerplate lines, such as a catch clause, prove nothing here.)
@@ -78,6 +77,7 @@ class StudentPackTest(unittest.TestCase):
             for absent in ("--solutions", "--student", "workbook grade", "workbook pack", "  grade ", "  pack "):
                 self.assertNotIn(absent, text, f"{where} of the student edition mentions {absent!r}")
         self.assertIn("check CHAPTER", help_text)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)
