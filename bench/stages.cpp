@@ -22,16 +22,6 @@ World warm_gas(benchmark::State& state) {
     return world;
 }
 
-/// An elastic impulse, as in the gas (bench/gas_workbook.cpp).
-void elastic(workbook::RigidBody& body1, workbook::RigidBody& body2, const workbook::Contact& contact) {
-    const double approach = dot(body1.velocity - body2.velocity, contact.normal);
-    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
-    if (approach >= 0.0 || inverse_masses == 0.0) return;
-    const double impulse = -2.0 * approach / inverse_masses;
-    body1.velocity += contact.normal * (impulse * body1.inverse_mass);
-    body2.velocity -= contact.normal * (impulse * body2.inverse_mass);
-}
-
 /// A floor of 20 x 20 immovable tiles (boxes 0.5 m wide, edge to edge, so that neighbouring
 /// tiles touch) under 400 falling balls: the scene where pairs of immovable bodies are many.
 World tiled_floor() {
@@ -45,7 +35,7 @@ World tiled_floor() {
     }
     for (int i = 0; i < 400; ++i)
         bodies.push_back(workbook::make_sphere(1.0, 0.1, {-4.75 + 0.5 * (i % 20), 0.5 + 0.1 * (i % 7), -4.75 + 0.5 * (i / 20)}));
-    static constexpr workbook::ResponseModel model{"elastic", elastic, nullptr};
+    static constexpr workbook::ResponseModel model{"elastic", workbook::bench::elastic_impulse, nullptr};
     World world(std::move(bodies), workbook::WorldSettings{1.0 / 60.0, {0, -9.81, 0}}, model);
     for (int i = 0; i < 10; ++i) world.step();
     return world;

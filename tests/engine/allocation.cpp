@@ -15,6 +15,7 @@
 #include <new>
 #include <vector>
 
+#include "elastic_impulse.hpp"
 #include "workbook/time_series.hpp"
 #include "workbook/world.hpp"
 
@@ -47,18 +48,9 @@ public:
 
 using namespace workbook;
 
-/// An elastic, frictionless impulse along the normal for approaching pairs, and a
-/// projection that splits the overlap by inverse mass: enough to keep a pile of balls
-/// bouncing on the ground, so that detection and both stages do real work every step.
-void elastic_impulse(RigidBody& body1, RigidBody& body2, const Contact& contact) {
-    const double approach = dot(body1.velocity - body2.velocity, contact.normal);
-    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
-    if (approach >= 0.0 || inverse_masses == 0.0) return;
-    const double impulse = -2.0 * approach / inverse_masses;
-    body1.velocity += contact.normal * (impulse * body1.inverse_mass);
-    body2.velocity -= contact.normal * (impulse * body2.inverse_mass);
-}
-
+/// The elastic impulse of the engine's tests and a projection that splits the overlap by
+/// inverse mass: enough to keep a pile of balls bouncing on the ground, so that detection and
+/// both stages do real work every step.
 void split_overlap(RigidBody& body1, RigidBody& body2, const Contact& contact, const PositionCorrection& knobs) {
     const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
     if (inverse_masses == 0.0) return;
@@ -68,7 +60,7 @@ void split_overlap(RigidBody& body1, RigidBody& body2, const Contact& contact, c
     body2.position -= push * body2.inverse_mass;
 }
 
-const ResponseModel bouncing{"test", elastic_impulse, split_overlap};
+const ResponseModel bouncing{"test", testing::elastic_impulse, split_overlap};
 
 World pile_of_balls() {
     std::vector<RigidBody> bodies{make_immovable_plane({0, 1, 0}, {0, 0, 0})};

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "elastic_impulse.hpp"
 #include "seeded_random.hpp"
 #include "state_hash.hpp"
 #include "workbook/broad_phase.hpp"
@@ -18,17 +19,8 @@ using namespace workbook;
 using workbook::testing::SeededRandom;
 using workbook::testing::state_hash;
 
-/// An elastic impulse that depends on the order contacts come in (each one sees the
-/// velocities the previous ones left), plus a projection, so any reordering shows.
-void elastic(RigidBody& body1, RigidBody& body2, const Contact& contact) {
-    const double approach = dot(body1.velocity - body2.velocity, contact.normal);
-    const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
-    if (approach >= 0.0 || inverse_masses == 0.0) return;
-    const double impulse = -2.0 * approach / inverse_masses;
-    body1.velocity += contact.normal * (impulse * body1.inverse_mass);
-    body2.velocity -= contact.normal * (impulse * body2.inverse_mass);
-}
-
+/// The elastic impulse of the engine's tests (each contact sees the velocities the previous
+/// ones left), plus a projection, so any reordering of contacts shows.
 void push_apart(RigidBody& body1, RigidBody& body2, const Contact& contact, const PositionCorrection& knobs) {
     const double inverse_masses = body1.inverse_mass + body2.inverse_mass;
     if (inverse_masses == 0.0) return;
@@ -37,7 +29,7 @@ void push_apart(RigidBody& body1, RigidBody& body2, const Contact& contact, cons
     body2.position -= push * body2.inverse_mass;
 }
 
-constexpr ResponseModel bouncing{"test", elastic, push_apart};
+constexpr ResponseModel bouncing{"test", workbook::testing::elastic_impulse, push_apart};
 
 /// A crowded 3D box of balls of mixed sizes and masses, a few pinned balls, walls and a floor
 /// (planes placed among the balls in index order, not only at the end), under gravity.
@@ -230,6 +222,26 @@ TEST_CASE("the swept test finds with the grid what it finds trying every body, s
     }
 }
 
+namespace {
+
+/// Both worlds of `bodies` after one step: one with the grid however few the bodies, one trying
+/// every body.
+struct BothWays {
+    World grid;
+    World every_body;
+};
+
+BothWays one_step_both_ways(const std::vector<RigidBody>& bodies, const WorldSettings& settings) {
+    BothWays run{World(bodies, settings, bouncing), World(bodies, settings, bouncing)};
+    run.grid.set_shortcuts({.broad_phase_from = 0});
+    run.every_body.set_shortcuts({.broad_phase = false});
+    run.grid.step();
+    run.every_body.step();
+    return run;
+}
+
+}  // namespace
+
 TEST_CASE("two equally early touches go to the partner of smaller index, as when trying every body",
           "[world][broad_phase][swept]") {
     // Ball 0 starts touching balls 1 and 2 (gaps exactly 0) and runs through both within the
@@ -238,13 +250,7 @@ TEST_CASE("two equally early touches go to the partner of smaller index, as when
     // that it does); the answer must still be ball 1.
     const std::vector<RigidBody> bodies{make_sphere(1, 0.5, {0, 0, 0}, {1.25, -1.25, 0}), make_immovable_sphere(0.5, {1, 0, 0}),
                                         make_immovable_sphere(0.5, {0, -1, 0}), make_immovable_sphere(0.5, {-3.9, -1.25, 0})};
-    const WorldSettings settings{1.0, {}};
-    World grid(bodies, settings, bouncing);
-    grid.set_shortcuts({.broad_phase_from = 0});
-    World every_body(bodies, settings, bouncing);
-    every_body.set_shortcuts({.broad_phase = false});
-    grid.step();
-    every_body.step();
+    const auto [grid, every_body] = one_step_both_ways(bodies, WorldSettings{1.0, {}});
     REQUIRE(grid.used_broad_phase());
     REQUIRE(grid.contacts().size() == 1);
     CHECK(grid.contacts()[0].body1 == 0);
@@ -267,12 +273,7 @@ TEST_CASE("a sphere that travels past its neighbouring cells still finds what it
             for (int j = 0; j < 10; ++j) bodies.push_back(make_immovable_sphere(0.2, {-2.25 + 0.5 * i, -2.0 + 0.5 * j, 0}));
         bodies.push_back(make_sphere(1, 0.04, {dx - 0.5, 0.25, 0}, {1.56, 0, 0}));
         bodies.push_back(make_sphere(1, 0.04, {dx - 0.25, 0.25, 0}));
-        const WorldSettings settings{0.5, {}};
-        World grid(bodies, settings, bouncing);
-        World every_body(bodies, settings, bouncing);
-        every_body.set_shortcuts({.broad_phase = false});
-        grid.step();
-        every_body.step();
+        const auto [grid, every_body] = one_step_both_ways(bodies, WorldSettings{0.5, {}});
         REQUIRE(grid.used_broad_phase());
         REQUIRE(grid.contacts().size() == 1);
         CHECK(grid.contacts()[0].body1 == 100);
