@@ -21,7 +21,7 @@ which waiting for a core on a shared machine does not inflate. Other work on the
 slows a run down through the caches and memory they share, and never speeds one up: so the
 fastest of the runs is the best estimate of what the engine itself costs, as in the accuracy
 bench (on this machine one run of the workbook at N = 100,000 took 23.8 ms per step beside
-runs of 15.4 and 17.9 ms). Compare engines only within one run. Runs are interleaved (each
+runs of 15.4 and 17.8 ms). Compare engines only within one run. Runs are interleaved (each
 repetition runs every N and every engine once) so that a burst of load from elsewhere hits
 all sizes and engines alike.
 """
@@ -302,7 +302,8 @@ def main():
     parser.add_argument("--rewrite", action="store_true",
                         help="run nothing: write the table, the page and the figure again from OUT/speed.csv and the "
                              "first line of OUT/speed.md (when and where the run was made), after a change to how "
-                             "they are written; with --record, copy them too")
+                             "they are written (give it the run's --peers-up-to, which the CSV does not keep); with "
+                             "--record, copy them too")
     args = parser.parse_args()
     PEERS_UP_TO[0] = args.peers_up_to
     if args.rewrite:
