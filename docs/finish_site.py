@@ -6,18 +6,17 @@
 - gives every chapter page previous and next links, in the order of chapters/CHAPTERS, so a
   reader can go through the book page by page. A chapter added to CHAPTERS gets them too.
 
-    finish_site.py HTML_DIR --mathjax /usr/share/javascript/mathjax [--link-mathjax]"""
+    python3 -m docs.finish_site HTML_DIR --mathjax /usr/share/javascript/mathjax [--link-mathjax]"""
 import argparse
 import html
 import os
 import pathlib
 import re
 import shutil
-import sys
+
+from tools import workbook_files
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-import workbook_files  # noqa: E402
 
 # What Doxygen's MathJax 2 configuration (TeX/AMSmath, TeX/AMSsymbols, output/HTML-CSS) loads.
 MATHJAX_PARTS = ["MathJax.js", "extensions", "jax/element", "jax/input/TeX", "jax/output/HTML-CSS/config.js",

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import os
 import re
 
-from sandbox import Limits
+from grader.sandbox import Limits
 
 COMPILE_LIMITS = Limits(wall_seconds=120, memory_bytes=4 << 30, file_bytes=512 << 20, processes=64,
                         output_bytes=4 << 20)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Grades submissions against the instructor's engine, public and hidden tests.
 
-    python3 grader/grade.py --build-dir build/dev [options] SUBMISSION...
+    python3 -m grader.grade --build-dir build/dev [options] SUBMISSION...   (from the workbook's folder)
 
 A submission is a folder, .zip or .tar.gz holding the student's copies of skeleton/ files.
 Writes OUT/<submission>/results.json (Gradescope's format) and summary.txt, and
@@ -19,20 +19,18 @@ import threading
 import time
 import traceback
 
-HERE = pathlib.Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
-sys.path.insert(0, str(HERE.parent / "tools"))
-
-import build  # noqa: E402
-import kit as kits  # noqa: E402
-import report  # noqa: E402
-import runner  # noqa: E402
-import sandbox as sandboxes  # noqa: E402
-import submission as submissions  # noqa: E402
+from grader import build
+from grader import kit as kits
+from grader import report
+from grader import runner
+from grader import sandbox as sandboxes
+from grader import submission as submissions
 
 
-def parse_args(argv):
-    parser = argparse.ArgumentParser(description="Grade workbook submissions with the public and hidden tests.")
+def build_parser(add_help=True):
+    """The options of grade; ./workbook grade takes the same (one definition for both)."""
+    parser = argparse.ArgumentParser(description="Grade workbook submissions with the public and hidden tests.",
+                                     add_help=add_help)
     parser.add_argument("submissions", nargs="+", metavar="SUBMISSION", help="folder, .zip or .tar.gz")
     parser.add_argument("--build-dir", default="build/dev", help="the instructor's build holding grader/kit.json")
     parser.add_argument("--out", default="grading-results", help="folder for results.json files and gradebook.csv")
@@ -50,7 +48,11 @@ def parse_args(argv):
     parser.add_argument("--results-json", help="also copy the (single) submission's results.json here (Gradescope)")
     parser.add_argument("--keep-work", action="store_true", help="keep the build folders (printed) for debugging")
     parser.add_argument("--quiet", action="store_true", help="only the progress lines, no per-submission summary")
-    return parser.parse_args(argv)
+    return parser
+
+
+def parse_args(argv):
+    return build_parser().parse_args(argv)
 
 
 class Grader:

@@ -8,12 +8,9 @@ import os
 import pathlib
 import shutil
 import subprocess
-import sys
 import xml.etree.ElementTree as ElementTree
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "tools"))
-import catch_xml  # noqa: E402
-import workbook_files  # noqa: E402
+from tools import catch_xml, workbook_files
 
 
 class KitError(Exception):

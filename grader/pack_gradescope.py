@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the Gradescope autograder zip.
 
-    python3 grader/pack_gradescope.py OUT.zip [--hidden-visibility V] [--seed N] [--time-limit S]
+    python3 -m grader.pack_gradescope OUT.zip [--hidden-visibility V] [--seed N] [--time-limit S]
 
 Layout: setup.sh and run_autograder at the root, the instructor's tree (minus .git and
 build folders) under workbook/. Gradescope unpacks it to /autograder/source, runs setup.sh
@@ -18,11 +18,11 @@ import subprocess
 import sys
 import zipfile
 
+from grader import report
+from grader.pack_student import tracked_files
+from tools import workbook_files
+
 HERE = pathlib.Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
-sys.path.insert(0, str(HERE.parent / "tools"))
-import report  # noqa: E402
-import workbook_files  # noqa: E402
 
 SKIP_DIRS = {".git", "build", "out", "grading-results", "__pycache__", ".cache", ".idea", ".vscode"}
 APT_PACKAGES = ("g++ cmake ninja-build python3 binutils bubblewrap util-linux libfmt-dev nlohmann-json3-dev libcli11-dev")
@@ -79,7 +79,7 @@ RESULTS="$ROOT/results/results.json"
 mkdir -p "$ROOT/results"
 rm -f "$RESULTS"
 WORK="$(mktemp -d)"
-python3 "$SOURCE/workbook/grader/grade.py" --build-dir "$BUILD" --out "$WORK" --results-json "$RESULTS" \
+PYTHONPATH="$SOURCE/workbook" python3 -m grader.grade --build-dir "$BUILD" --out "$WORK" --results-json "$RESULTS" \
         --seed @SEED@ --time-limit @TIME@ --hidden-visibility @VISIBILITY@ "$ROOT/submission"
 status=$?
 if [ ! -s "$RESULTS" ]; then
@@ -95,7 +95,6 @@ def tree_files(root, exclude):
     """The files git knows of (tracked, or new and not ignored), like the student pack; a tree
     that is not a git checkout (an unpacked release) is walked instead."""
     try:
-        from pack_student import tracked_files
         listed = [root / relative for relative in tracked_files(root)]
     except (OSError, subprocess.CalledProcessError):
         listed = None

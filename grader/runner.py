@@ -16,20 +16,10 @@ import subprocess
 import tempfile
 import threading
 
-from build import limits_for
-import catch_xml
-from sandbox import Limits
+from grader.build import limits_for
+from grader.sandbox import Limits
+from tools import catch_xml, wording
 
-SIGNAL_NAMES = {
-    signals.SIGSEGV: "segmentation fault: a bad pointer or an out-of-range index?",
-    signals.SIGABRT: "abort: std::abort, a failed assert or std::terminate",
-    signals.SIGFPE: "arithmetic error, such as an integer division by zero",
-    signals.SIGBUS: "bus error",
-    signals.SIGILL: "illegal instruction",
-    signals.SIGKILL: "killed, probably for using too much memory or CPU time",
-    signals.SIGXCPU: "CPU time limit exceeded",
-    signals.SIGXFSZ: "file size limit exceeded",
-}
 KEEP_FAILURES = 2
 KEEP_FAILURE_CHARS = 1500
 KEEP_PRINTED_CHARS = 1000
@@ -145,8 +135,7 @@ def judge(checker, case, student, limits, printed):
     if run.error:
         return False, f"the test could not be started: {run.error}"
     if run.timed_out:
-        return False, (f"timed out after {limits.wall_seconds:g} s: an endless loop, or code that waits "
-                       f"for something?{printed}")
+        return False, wording.timed_out(limits.wall_seconds) + printed
     if run.flooded:
         return False, (f"your code printed more than {limits.output_bytes // 1024} KiB of output, so the test "
                        f"was stopped{printed}")
@@ -154,10 +143,7 @@ def judge(checker, case, student, limits, printed):
         return False, (f"your code wrote more than {limits.disk_bytes >> 20} MiB to disk, so the test was "
                        f"stopped{printed}")
     if run.signal is not None:
-        reason = SIGNAL_NAMES.get(run.signal, "")
-        name = _signal_name(run.signal)
-        return False, (f"your code crashed with signal {run.signal} ({name}{': ' + reason if reason else ''})"
-                       f"{printed}")
+        return False, f"your code {wording.crashed(signal_number=run.signal)} [{_signal_name(run.signal)}]{printed}"
     if run.returncode == 0:
         return False, ("your program exited early with status 0 before the test finished (does your code call "
                        f"exit()?){printed}")

@@ -7,43 +7,26 @@ costs that step only: every other step is still run and reported, and the summar
 always printed. The look and the wording are those of the "steps" reporter
 (tests/support/step_reporter.cpp), which a student without Python can still use by hand.
 
-    check.py --binary build/student/tests/public_steps_student --chapter inelastic --seed 20261122
+    python3 -m tools.check --binary build/student/tests/public_steps_student --chapter inelastic --seed 20261122
+
+(from the workbook's folder: the workbook's Python code is one tree of packages, tools/ among them).
 
 Exit status: 0 when every step passes, 1 otherwise, 2 for wrong arguments."""
 import argparse
 import concurrent.futures
 import os
 import pathlib
-import re
 import signal
 import subprocess
 import sys
 import tempfile
 from dataclasses import dataclass, field
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import catch_xml  # noqa: E402
+from tools import catch_xml, wording
 
 DEFAULT_TIME_LIMIT = 10.0  # seconds per test case; each takes milliseconds when the code is right
 SHOWN_CASES_PER_STEP = 2
 SHOWN_PRINTED_CHARS = 600
-
-# How a signal that ended the test program reads to a student: (what happened, the usual cause).
-_SIGNALS = [
-    ("SIGSEGV", "a segmentation fault", "a bad pointer or reference, or an index out of range?"),
-    ("SIGABRT", "an abort", "std::abort, a failed assert, or an exception thrown where none may be"),
-    ("SIGFPE", "an arithmetic error", "an integer division by zero?"),
-    ("SIGBUS", "a bus error", "a bad pointer?"),
-    ("SIGILL", "an illegal instruction", "a function that should return a value ended without return?"),
-    ("SIGKILL", "the process killed from outside", "too much memory?"),
-]
-SIGNAL_WORDS = {getattr(signal, name): (what, why) for name, what, why in _SIGNALS if hasattr(signal, name)}
-# The same crashes as Windows reports them, as exit statuses.
-WINDOWS_CRASHES = {0xC0000005: SIGNAL_WORDS.get(getattr(signal, "SIGSEGV", 11)),
-                   0xC0000094: ("an arithmetic error", "an integer division by zero?"),
-                   0xC00000FD: ("a stack overflow", "a function that calls itself without end?")}
-
-NAN = re.compile(r"(?<![A-Za-z])-?(nan|inf)(?![A-Za-z])", re.IGNORECASE)
 
 
 @dataclass
@@ -74,22 +57,14 @@ def step_of(tags):
     return 0, "untagged tests"
 
 
-def crash_words(returncode):
-    if returncode < 0:
-        return SIGNAL_WORDS.get(-returncode, (f"signal {-returncode}", None))
-    return WINDOWS_CRASHES.get(returncode & 0xFFFFFFFF)
-
-
 def judge(name, step, returncode, timed_out, report_text, printed, time_limit):
     """The CaseResult of one test case, from how its process ended and its XML report."""
     where = f"in step {step}"
     if timed_out:
-        return CaseResult(name, False, f"did not finish within {time_limit:g} s {where} and was stopped: "
-                                       f"an endless loop, or a loop whose condition never changes?{printed}")
-    crash = crash_words(returncode)
+        return CaseResult(name, False, wording.timed_out(time_limit, where) + printed)
+    crash = wording.crashed(returncode, where=where)
     if crash is not None:
-        what, why = crash
-        return CaseResult(name, False, f"crashed with {what} {where}" + (f" ({why})" if why else "") + printed)
+        return CaseResult(name, False, crash + printed)
     case = None
     try:
         case = next((c for c in catch_xml.parse(report_text) if c.name == name), None)
@@ -107,11 +82,8 @@ def judge(name, step, returncode, timed_out, report_text, printed, time_limit):
         first = f"your code threw an exception {where}: " + first[len("your code threw an exception: "):]
     elif first.startswith("your code crashed: "):
         first = f"your code crashed {where}: " + first[len("your code crashed: "):]
-    elif NAN.search(_actual_line(first)):
-        value = NAN.search(_actual_line(first)).group(0).lower().lstrip("-")
-        words = "NaN (not a number)" if value == "nan" else "an infinite value"
-        first = (f"your code produced {words} {where}: a division by zero, or a value used before it "
-                 f"was set?\n{first}")
+    elif wording.first_nan(_actual_line(first)):
+        first = f"your code {wording.not_a_number(wording.first_nan(_actual_line(first)), where)}\n{first}"
     return CaseResult(name, False, first + printed)
 
 
@@ -160,8 +132,7 @@ def list_cases(binary, chapter):
     try:
         return catch_xml.parse_listing(run.stdout)
     except ValueError:
-        crash = crash_words(run.returncode)
-        how = f"crashed with {crash[0]}" if crash else f"stopped with exit status {run.returncode}"
+        how = wording.crashed(run.returncode) or f"stopped with exit status {run.returncode}"
         raise RuntimeError(f"the test program {how} before any test could run "
                            f"(code that runs at start-up, such as a global variable's initialiser?)\n"
                            f"{run.stderr.strip()[:SHOWN_PRINTED_CHARS]}") from None

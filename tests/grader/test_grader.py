@@ -495,7 +495,7 @@ class GradescopeTest(unittest.TestCase):
             self.assertEqual(results["score"], 0, results["output"])
             self.assertTrue(results["tests"])
             self.assertTrue(all(t["status"] == "failed" for t in results["tests"]))
-        self.assertTrue(any("crashed with signal 11" in t["output"] for t in self.g.results["crashing"][1]["tests"]),
+        self.assertTrue(any("crashed with a segmentation fault" in t["output"] for t in self.g.results["crashing"][1]["tests"]),
                         self.g.results["crashing"][1]["tests"][0]["output"])
 
     def test_hostile_submissions_without_bubblewrap(self):
