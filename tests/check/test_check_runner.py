@@ -14,9 +14,9 @@ import time
 import unittest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-CHECK = ROOT / "tools" / "check.py"
-sys.path.insert(0, str(ROOT / "tools"))
-import check  # noqa: E402
+CHECK = [sys.executable, "-m", "tools.check"]  # run from the workbook's folder (cwd=ROOT)
+
+from tools import check  # noqa: E402
 
 ARGS = None
 TIME_LIMIT = 2.0
@@ -24,8 +24,8 @@ TIME_LIMIT = 2.0
 
 def run_check(binary, *extra):
     started = time.monotonic()
-    run = subprocess.run([sys.executable, str(CHECK), "--binary", binary, "--chapter", "inelastic",
-                          "--seed", ARGS.seed, *extra], capture_output=True, text=True, timeout=120)
+    run = subprocess.run([*CHECK, "--binary", binary, "--chapter", "inelastic",
+                          "--seed", ARGS.seed, *extra], capture_output=True, text=True, timeout=120, cwd=ROOT)
     return run, time.monotonic() - started
 
 
@@ -92,7 +92,7 @@ class OrdinaryCode(unittest.TestCase):
         self.assertNotIn("FAIL", run.stdout)
 
     def test_wrong_arguments_exit_2(self):
-        run = subprocess.run([sys.executable, str(CHECK), "--chapter", "inelastic"], capture_output=True, text=True)
+        run = subprocess.run([*CHECK, "--chapter", "inelastic"], capture_output=True, text=True, cwd=ROOT)
         self.assertEqual(run.returncode, 2)
         self.assertIn("usage:", run.stderr)
 

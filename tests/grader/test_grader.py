@@ -5,7 +5,7 @@ batch, then checks the scores against each expect.json, the output formats, that
 tests leak no source, that regrading is deterministic, and that the Gradescope zip works
 against a simulated /autograder tree.
 
-    python3 tests/grader/test_grader.py --build-dir build/dev   (ctest runs it: label grader)"""
+    python3 -m tests.grader.test_grader --build-dir build/dev   (from the workbook's folder; ctest runs it: label grader)"""
 import argparse
 import csv
 import gzip
@@ -24,14 +24,19 @@ import time
 import unittest
 import zipfile
 
-from compose import compose
-
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools"))
-import workbook_files  # noqa: E402
+from tests.grader.compose import compose
+from tools import workbook_files
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-GRADE = ROOT / "grader" / "grade.py"
-PACK = ROOT / "grader" / "pack_gradescope.py"
+
+
+def module(name, root=ROOT):
+    """argv and environment that run one of the workbook's Python programs (grader.grade) from root."""
+    return [sys.executable, "-m", name], dict(os.environ, PYTHONPATH=str(root))
+
+
+GRADE, GRADE_ENV = module("grader.grade")
+PACK, PACK_ENV = module("grader.pack_gradescope")
 BUILD_DIR = ROOT / "build" / "dev"
 TIME_LIMIT = "3"
 FRESH_UID_BASE = 1_600_000_000
@@ -61,9 +66,9 @@ class Batch:
 
     def grade(self):
         started = time.monotonic()
-        with subprocess.Popen([sys.executable, str(GRADE), "--build-dir", str(BUILD_DIR), "--out", str(self.out),
+        with subprocess.Popen([*GRADE, "--build-dir", str(BUILD_DIR), "--out", str(self.out),
                                "--time-limit", TIME_LIMIT, "--quiet", *map(str, self.paths)],
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True) as grader:
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=GRADE_ENV) as grader:
             # The sandbox derives its fresh uids from the grader's pid; the fork-loop check
             # looks at those alone, so another grader running on the machine cannot fail it.
             self.grader_pid = grader.pid
@@ -257,17 +262,18 @@ class GraderTest(unittest.TestCase):
         empty = self.b.tmp / "nothing-here"
         empty.mkdir(exist_ok=True)
         for path in (self.b.tmp / "no-such-submission", empty):
-            run = subprocess.run([sys.executable, str(GRADE), "--build-dir", str(BUILD_DIR), "--out",
-                                  str(self.b.tmp / "refused"), str(path)], capture_output=True, text=True, timeout=60)
+            run = subprocess.run([*GRADE, "--build-dir", str(BUILD_DIR), "--out",
+                                  str(self.b.tmp / "refused"), str(path)], capture_output=True, text=True, timeout=60,
+                                 env=GRADE_ENV)
             self.assertEqual(run.returncode, 2, run.stdout)
             self.assertIn(str(path), run.stderr)
             self.assertFalse((self.b.tmp / "refused" / "gradebook.csv").exists())
 
     def test_resume_keeps_finished_rows(self):
         """A second run with --resume over the same --out grades nothing again."""
-        run = subprocess.run([sys.executable, str(GRADE), "--build-dir", str(BUILD_DIR), "--out", str(self.b.out),
+        run = subprocess.run([*GRADE, "--build-dir", str(BUILD_DIR), "--out", str(self.b.out),
                               "--resume", "--quiet", *map(str, self.b.paths)], capture_output=True, text=True,
-                             timeout=120)
+                             timeout=120, env=GRADE_ENV)
         self.assertEqual(run.returncode, 0, run.stderr[-2000:])
         self.assertIn(f"Resuming: {len(self.b.paths)} submission(s)", run.stdout)
         self.assertFalse([line for line in run.stdout.splitlines() if line.startswith("[")])
@@ -385,8 +391,8 @@ class Gradescope:
         shutil.rmtree(self.root, ignore_errors=True)
         self.root.mkdir(parents=True)
         zip_path = self.root / "autograder.zip"
-        self.pack = subprocess.run([sys.executable, str(PACK), str(zip_path)], capture_output=True, text=True,
-                                   timeout=300)
+        self.pack = subprocess.run([*PACK, str(zip_path)], capture_output=True, text=True, timeout=300,
+                                   env=PACK_ENV)
         if self.pack.returncode != 0:
             return
         with zipfile.ZipFile(zip_path) as archive:
@@ -412,11 +418,12 @@ class Gradescope:
         # fresh unprivileged uids and the permissions setup.sh set are all that protect.
         self.hostile = {n: e for n, e in made.expect.items() if n.startswith("hostile-")}
         self.hostile_out = self.root / "hostile-out"
-        grade = self.root / "source" / "workbook" / "grader" / "grade.py"
+        grade, grade_env = module("grader.grade", self.root / "source" / "workbook")
         self.hostile_run = subprocess.run(
-            [sys.executable, str(grade), "--build-dir", str(self.root / "source" / "workbook" / "build" / "grader"),
+            [*grade, "--build-dir", str(self.root / "source" / "workbook" / "build" / "grader"),
              "--out", str(self.hostile_out), "--time-limit", TIME_LIMIT, "--quiet", "--no-bwrap",
-             *(str(made.subs / n) for n in self.hostile)], capture_output=True, text=True, timeout=600)
+             *(str(made.subs / n) for n in self.hostile)], capture_output=True, text=True, timeout=600,
+            env=grade_env)
 
     @staticmethod
     def _apt_sources():

@@ -4,12 +4,10 @@ passes (the reference) or that every step fails with feedback naming a broken la
 untouched skeleton). A step that an untouched skeleton passes would give students free
 points and tell them nothing, so it is a bug in the tests."""
 import argparse
-import pathlib
 import subprocess
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools"))
-import catch_xml  # noqa: E402
+from tools import catch_xml
 
 
 def main():

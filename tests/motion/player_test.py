@@ -59,9 +59,7 @@ def main():
     parser.add_argument("--source", type=Path, required=True)
     parser.add_argument("--chromium", required=True)
     args = parser.parse_args()
-    sys.path.insert(0, str(args.source / "tests/site"))
-    import browser
-    import motion_player_check
+    from tests.site import browser, motion_player_check  # run from the workbook's folder (ctest does)
 
     scenes = sorted((args.source / "chapters" / CHAPTER / "scenes").glob("*.json"))
     titles = [json.loads(scene.read_text())["title"] for scene in scenes]

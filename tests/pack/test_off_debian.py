@@ -14,16 +14,13 @@ import os
 import pathlib
 import re
 import subprocess
-import sys
 import tempfile
 import unittest
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "grader"))
-import pack_student  # noqa: E402
+from grader import pack_student
+from tools import workbook_files
 
-sys.path.insert(0, str(ROOT / "tools"))
-import workbook_files  # noqa: E402
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 PACKAGE_MANAGERS = {"apt", "apt-get", "apt-cache", "apt-mark", "apt-config", "dpkg", "dpkg-query", "dpkg-deb"}
 GCC = {"gcc", "g++", "cc", "c++", "cpp"}

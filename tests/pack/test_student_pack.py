@@ -5,13 +5,12 @@ start and checks every chapter from scratch, with Clang alone: one build of the 
 whole suite, since the same sources are built with GCC in this tree's own build.)"""
 import pathlib
 import subprocess
-import sys
 import tempfile
 import unittest
 
+from grader import pack_student
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "grader"))
-import pack_student  # noqa: E402
 
 # Answers live in C++: the reference, hidden tests and mutants. (The grader and the hostile
 # submissions are kept out of the pack by the file-list test; they hold no answer, and their

@@ -9,7 +9,7 @@ chapters/CHAPTERS, and each must hold a motion player of all its scenes that loa
 pauses, scrubs and changes speed with its cursor in step (motion_player_check.py). A screenshot of the main page and of every chapter page is kept in
 SCREENSHOTS (a build artefact, to be looked at).
 
-    test_site.py --html build/dev/book/site/html --screenshots build/dev/book/site/screenshots"""
+    python3 -m tests.site.test_site --html build/dev/book/site/html --screenshots build/dev/book/site/screenshots"""
 import argparse
 import html as html_text
 import json
@@ -20,15 +20,12 @@ import tempfile
 import unittest
 import urllib.parse
 
+from docs import finish_site
+from tests.site import browser, motion_player_check
+from tools import workbook_files
+
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-sys.path.insert(0, str(HERE))
-sys.path.insert(0, str(ROOT / "tools"))
-sys.path.insert(0, str(ROOT / "docs"))
-import browser  # noqa: E402
-import finish_site  # noqa: E402
-import motion_player_check  # noqa: E402
-import workbook_files  # noqa: E402
 
 ARGS = None
 

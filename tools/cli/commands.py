@@ -189,7 +189,9 @@ def check_time_limit():
          "status 0 only when every step passes.")
 def run_check(args, raw):
     number = chapter_number(args.chapter)
-    solutions = getattr(args, "solutions", False)
+    solutions = args.solutions
+    if solutions and not full():
+        raise Refusal("this edition has no solutions/ (the reference solutions are the instructor's)")
     binary, who = ("public_steps_reference", "the reference solutions") if solutions else \
                   ("public_steps_student", "your code in skeleton/")
     limit = check_time_limit()
@@ -212,15 +214,16 @@ def run_check(args, raw):
 @run_check.arguments
 def _(parser):
     parser.add_argument("chapter", metavar="CHAPTER", help="one of: " + chapter_list())
-    if full():
-        parser.add_argument("--solutions", action="store_true", help="the same checks on the reference solutions")
+    # The student edition has no solutions: --solutions is refused there by name, not as unknown.
+    parser.add_argument("--solutions", action="store_true",
+                        help="the same checks on the reference solutions" if full() else argparse.SUPPRESS)
 
 
 STUDENT_HELP_FULL = "your code in skeleton/ instead of the reference solutions"
 STUDENT_HELP_STUDENT = "your code (in this edition, which has no reference, it always is)"
 
 
-@command("run", "Students", "simulate scene files (--student: with your code)",
+@command("run", "Students", "simulate scene files" + (" (--student: with your code)" if full() else " with your code"),
          "Simulates each scene file and prints a summary. Every scene file is checked first: either all of them "
          "run, or none does.")
 def run_run(args, raw):
