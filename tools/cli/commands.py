@@ -513,7 +513,8 @@ class Parser(argparse.ArgumentParser):
     """argparse, with the workbook's refusals: what is wrong, then the usage, on stderr; exit 2."""
 
     def error(self, message):
-        message = re.sub(r"^argument \w+: invalid choice: '([^']*)'.*", r"unknown choice '\1'", message)
+        message = re.sub(r"^argument [^:]+: invalid choice: '([^']*)' \(choose from (.*)\)$",
+                         lambda m: f"unknown choice '{m[1]}' (one of {m[2]})", message)
         self.exit(2, f"{self.prog}: {message}\n\n{self.format_usage()}Run {self.prog} --help for details.\n")
 
 

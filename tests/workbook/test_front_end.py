@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""The front end's parts, without building anything: every command's help and refusals come
+from its one definition; the help names the real defaults and no internal tickets; the same
+commands start without bash (workbook.py, python -m tools.cli, ./workbook under a plain sh);
+Windows paths, programs and consoles (with os and platform mocked); and the bench's and the
+figures' bookkeeping (stale NOTFOUND peers, the site's copies of the figures).
+
+    python3 -m tests.workbook.test_front_end   (from the workbook's folder; ctest runs it)"""
+import argparse
+import contextlib
+import io
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from unittest import mock
+
+from tools import check
+from tools.cli import building, commands, console, edition, host, prerequisites
+
+ROOT = edition.ROOT
+LISTED = [c for c in commands.COMMANDS if c.listed()]
+
+
+def help_of(entry):
+    """A command's --help, its words joined by single spaces (wherever the lines break)."""
+    return " ".join(commands.command_parser(entry).format_help().split())
+
+
+def entry(name):
+    return next(c for c in commands.COMMANDS if c.name == name)
+
+
+class OneDefinition(unittest.TestCase):
+    def test_help_lists_each_command_as_its_parser_defines_it(self):
+        text = commands.overview()
+        for command in LISTED:
+            with self.subTest(command=command.name):
+                self.assertIn(commands.synopsis(command, commands.command_parser(command)), text)
+                self.assertIn(command.summary, text)
+
+    def test_every_option_a_command_takes_is_in_its_help(self):
+        for command in commands.COMMANDS:
+            parser = commands.command_parser(command)
+            text = parser.format_help()
+            for action in parser._actions:
+                for option in action.option_strings:
+                    if action.help != argparse.SUPPRESS:
+                        self.assertIn(option, text, f"{command.name}: {option}")
+
+    def test_check_help_names_the_real_time_limit(self):
+        self.assertIn(f"stopped after {check.DEFAULT_TIME_LIMIT:g} s", help_of(entry("check")))
+        with mock.patch.dict(os.environ, {"WORKBOOK_CHECK_TIME_LIMIT": "7.5"}):
+            self.assertIn("stopped after 7.5 s", help_of(entry("check")))
+        self.assertNotIn("${", help_of(entry("check")))
+
+    @unittest.skipUnless(edition.have_grader(), "the student edition has no grader")
+    def test_grade_takes_every_option_its_help_lists(self):
+        from grader import grade
+        parser = commands.command_parser(entry("grade"))
+        args = parser.parse_args(["alice.zip", "-j", "2", "--case-jobs", "1", "--time-limit", "3"])
+        self.assertEqual((args.jobs, args.case_jobs, args.time_limit), (2, 1, 3.0))
+        grader_options = {o for a in grade.build_parser()._actions for o in a.option_strings}
+        ours = {o for a in parser._actions for o in a.option_strings}
+        self.assertEqual(grader_options, ours)
+
+    def test_student_is_accepted_in_both_editions_and_listed_in_the_help(self):
+        for full in (True, False):
+            with mock.patch.object(commands, "full", lambda full=full: full):
+                for name in ("run", "figures", "animations"):
+                    with self.subTest(full=full, command=name):
+                        parser = commands.command_parser(entry(name))
+                        self.assertIn("--student", parser.format_help())
+                        argv = ["scene.json", "--student"] if name == "run" else ["--student"]
+                        self.assertTrue(parser.parse_args(argv).student)
+
+    def test_no_ticket_numbers_in_any_help(self):
+        texts = [commands.overview()] + [help_of(c) for c in commands.COMMANDS]
+        for text in texts:
+            self.assertIsNone(re.search(r"(?i)\b(issue|ticket)s? #?\d+", text), text[:200])
+
+    def test_refusals_say_what_is_wrong_then_the_usage_and_exit_2(self):
+        for argv, words in ((["check", "no-such-chapter"], "unknown chapter 'no-such-chapter'"),
+                            (["no-such-command"], "unknown command 'no-such-command'"),
+                            (["help", "extra"], "help takes no arguments"),
+                            (["bench", "nonsense"], "unknown choice 'nonsense'")):
+            if argv[0] == "bench" and not edition.have_solutions():
+                continue
+            with self.subTest(argv=argv):
+                err = io.StringIO()
+                with contextlib.redirect_stderr(err), mock.patch.object(building, "build") as build:
+                    try:
+                        status = commands.main(argv)
+                    except SystemExit as end:
+                        status = end.code
+                self.assertEqual(status, 2)
+                self.assertIn(words, err.getvalue())
+                self.assertRegex(err.getvalue(), "(?i)usage:")
+                build.assert_not_called()
+
+
+class WithoutBash(unittest.TestCase):
+    """The same commands with no bash anywhere: PATH holds only a Python (and, for ./workbook, a plain sh)."""
+
+    def setUp(self):
+        self.bin = pathlib.Path(tempfile.mkdtemp(prefix="no-bash-"))
+        self.addCleanup(shutil.rmtree, self.bin)
+        for name in ("python3", "python"):
+            (self.bin / name).symlink_to(sys.executable)
+        self.env = dict(os.environ, PATH=str(self.bin))
+
+    def run_help(self, argv, cwd=ROOT):
+        run = subprocess.run(argv, cwd=cwd, env=self.env, capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("check CHAPTER", run.stdout)
+        return run
+
+    def test_workbook_py_from_anywhere(self):
+        self.run_help([sys.executable, str(ROOT / "workbook.py"), "help"], cwd=self.bin)
+
+    def test_python_m_tools_cli(self):
+        self.run_help([sys.executable, "-m", "tools.cli", "help"])
+
+    @unittest.skipUnless(shutil.which("dash") or shutil.which("sh"), "no POSIX sh")
+    def test_the_launcher_is_plain_sh(self):
+        sh = shutil.which("dash") or shutil.which("sh")
+        (self.bin / "sh").symlink_to(sh)
+        for tool in ("dirname",):  # what the launcher itself calls
+            (self.bin / tool).symlink_to(shutil.which(tool))
+        self.run_help([sh, str(ROOT / "workbook"), "help"], cwd=self.bin)
+        self.assertTrue((ROOT / "workbook").read_text().startswith("#!/bin/sh\n"))
+
+    def test_the_launcher_is_a_few_lines(self):
+        code = [line for line in (ROOT / "workbook").read_text().splitlines() if line.strip() and
+                not line.lstrip().startswith("#")]
+        self.assertLess(len(code), 25)
+        self.assertNotRegex("\n".join(code), r"\[\[|\$\{[A-Za-z_]+\[|local |declare |<<<|\bfunction\b")
+
+
+class Windows(unittest.TestCase):
+    """Windows as the front end sees it, mocked: ';'-separated path lists, .exe programs,
+    packages from vcpkg, a cp1252 console."""
+
+    def windows(self):
+        stack = contextlib.ExitStack()
+        stack.enter_context(mock.patch.object(host, "windows", lambda: True))
+        stack.enter_context(mock.patch.object(host.os, "pathsep", ";"))
+        return stack
+
+    def test_path_lists_split_at_semicolons_not_at_drive_colons(self):
+        with self.windows():
+            self.assertEqual(host.path_list(r"C:\vcpkg\installed\x64-windows;D:\libs"),
+                             [r"C:\vcpkg\installed\x64-windows", r"D:\libs"])
+        with mock.patch.object(host.os, "pathsep", ":"):
+            self.assertEqual(host.path_list("/opt/a:/opt/b:"), ["/opt/a", "/opt/b"])
+
+    def test_programs_have_exe_and_may_sit_in_a_configuration_folder(self):
+        with self.windows(), tempfile.TemporaryDirectory() as folder:
+            folder = pathlib.Path(folder)
+            self.assertEqual(host.program_name("workbook-sim"), "workbook-sim.exe")
+            self.assertEqual(host.built_program(folder, "workbook-sim"), folder / "workbook-sim.exe")
+            (folder / "Debug").mkdir()
+            (folder / "Debug" / "workbook-sim.exe").write_bytes(b"")
+            self.assertEqual(host.built_program(folder, "workbook-sim"), folder / "Debug" / "workbook-sim.exe")
+        self.assertEqual(host.program_name("workbook-sim"), "workbook-sim" if os.name != "nt" else "workbook-sim.exe")
+
+    def test_packages_are_found_in_vcpkg(self):
+        with self.windows(), tempfile.TemporaryDirectory() as vcpkg:
+            config = pathlib.Path(vcpkg, "installed", "x64-windows", "share", "fmt")
+            config.mkdir(parents=True)
+            (config / "fmt-config.cmake").write_text("")
+            environ = {"VCPKG_ROOT": vcpkg, "CMAKE_PREFIX_PATH": ""}
+            self.assertEqual(host.cmake_package_dir("fmt", environ), str(config))
+            self.assertIsNone(host.cmake_package_dir("CLI11", environ))
+
+    def test_the_libraries_come_from_vcpkg_and_setup_points_at_the_readme(self):
+        with self.windows(), mock.patch.dict(os.environ, {"VCPKG_ROOT": "C:/vcpkg"}):
+            self.assertTrue(prerequisites.tool_found("catch2-3"))
+            wanted = {tool_id for tool_id, _ in prerequisites.wanted_tools()}
+            self.assertNotIn("bubblewrap", wanted)
+            self.assertNotIn("clang", wanted)
+        advice = prerequisites.install_advice([("cmake", "every command")])
+        self.assertIn("Windows:", advice)
+        self.assertIn("README.md, section Windows", advice)
+        self.assertIn("README.md, section Windows", help_of(entry("setup")))
+
+    def test_a_cp1252_or_ascii_console_gets_readable_ascii(self):
+        for encoding in ("cp1252", "ascii"):
+            raw = io.BytesIO()
+            stream = io.TextIOWrapper(raw, encoding=encoding, errors="strict")
+            console.make_streams_safe([stream])
+            stream.write("Step 1 \u00b7 energy \u0394E \u2264 0 \u2192 ok \u2603\n")
+            stream.flush()
+            text = raw.getvalue().decode(encoding)
+            self.assertIn("\u0394E" if encoding == "utf-8" else "dE <= 0 -> ok ?", text)
+        utf8 = io.TextIOWrapper(io.BytesIO(), encoding="utf-8")
+        console.make_streams_safe([utf8])
+        self.assertEqual(utf8.errors, "strict")
+
+    def test_the_windows_help_names_the_py_launcher(self):
+        self.assertIn("py workbook.py", commands.overview() if not host.windows() else commands.PROG)
+
+
+class Bench(unittest.TestCase):
+    def test_peers_a_configure_did_not_find_are_forgotten(self):
+        with tempfile.TemporaryDirectory() as folder:
+            (pathlib.Path(folder) / "CMakeCache.txt").write_text(
+                "WORKBOOK_CHIPMUNK_INCLUDE:PATH=WORKBOOK_CHIPMUNK_INCLUDE-NOTFOUND\n"
+                "WORKBOOK_CHIPMUNK_LIBRARY:FILEPATH=/usr/lib/libchipmunk.so\n"
+                "box2d_DIR:PATH=box2d_DIR-NOTFOUND\n"
+                "benchmark_DIR:PATH=/usr/lib/x86_64-linux-gnu/cmake/benchmark\n"
+                "WORKBOOK_PEER_CHIPMUNK_INCLUDE:PATH=WORKBOOK_PEER_CHIPMUNK_INCLUDE-NOTFOUND\n"
+                "fmt_DIR:PATH=fmt_DIR-NOTFOUND\n")
+            with mock.patch.object(edition, "build_dir", lambda preset: pathlib.Path(folder)):
+                self.assertEqual(building.forget_missing_peers(),
+                                 ["WORKBOOK_CHIPMUNK_INCLUDE", "box2d_DIR", "WORKBOOK_PEER_CHIPMUNK_INCLUDE"])
+
+    def test_a_stale_configure_is_run_again_without_its_notfound_entries(self):
+        with mock.patch.object(prerequisites, "install_bench_packages", lambda: False), \
+                mock.patch.object(building, "forget_missing_peers", lambda preset="dev": ["box2d_DIR"]), \
+                mock.patch.object(building, "configured", lambda preset: True), \
+                mock.patch.object(building, "_packages_changed_since", lambda preset: True), \
+                mock.patch.object(prerequisites, "setup_tools"), \
+                mock.patch.object(building, "configure") as configure:
+            building.prepare_bench()
+        configure.assert_called_once_with("dev", ["-U", "box2d_DIR"], again=True)
+
+
+class Figures(unittest.TestCase):
+    def test_the_site_gets_the_figures_just_drawn(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            scratch = pathlib.Path(scratch)
+            drawn, html = scratch / "figures" / "inelastic", scratch / "html"
+            drawn.mkdir(parents=True)
+            html.mkdir()
+            (drawn / "carts.svg").write_text("new")
+            (drawn / "carts.csv").write_text("data")  # the site has no copy of it: left alone
+            (drawn / "same.svg").write_text("same")
+            (html / "carts.svg").write_text("old")
+            (html / "same.svg").write_text("same")
+            self.assertEqual(commands.update_site_copies([drawn], html), 1)
+            self.assertEqual((html / "carts.svg").read_text(), "new")
+            self.assertFalse((html / "carts.csv").exists())
+            self.assertEqual(commands.update_site_copies([drawn], scratch / "no-site"), 0)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
