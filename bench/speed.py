@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`./workbook bench speed`: the gas of issue 12 in the workbook and in its peers, one run.
+"""`./workbook bench speed`: a 2D gas of equal balls in a closed box, in the workbook and in its peers, one run.
 
 For every engine (workbook, chipmunk, box2d, bullet) and every N it runs
 `workbook-gas ENGINE N STEPS` REPEAT times in its own process, and keeps the fastest time
@@ -14,7 +14,7 @@ and the relative drift of kinetic energy. It writes
 
 With --record it also copies them (the figure as SVG only) into bench/results/: the recorded run that the
 site shows when its build has not run the bench itself (docs/CMakeLists.txt), and that
-tests/bench/recorded_speed.py holds to the goals of issue 12.
+tests/bench/recorded_speed.py holds to the speed goals.
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread),
 which waiting for a core on a shared machine does not inflate. Other work on the machine still
@@ -182,15 +182,21 @@ def three_digits(x):
     return f"{x:#.3g}".rstrip(".") if abs(x) < 1e3 else f"{x:.3g}"
 
 
-def markdown(rows, engines, sizes, measured):
+def markdown(rows, engines, sizes, measured, not_built=()):
+    """The table; a peer this build has not got (its package missing) is a column that says so."""
+    measured_engines = engines
+    engines = [e for e in ENGINES if e in engines or e in not_built]
     lines = [measured, ""]
     head = "| N | steps |" + "".join(f" {TITLES[e]} ms/step |" for e in engines)
     lines += [head, "|" + "---|" * (2 + len(engines))]
     by = {(r["engine"], r["n"]): r for r in rows}
     for n in sizes:
-        cells = [f"{n:,}", str(by[(engines[0], n)]["steps"])]
+        cells = [f"{n:,}", str(by[(measured_engines[0], n)]["steps"])]
         for e in engines:
-            r = by[(e, n)]
+            r = by.get((e, n))
+            if r is None:
+                cells.append("not built")
+                continue
             cells.append(("not run" if e != "workbook" and n > PEERS_UP_TO[0] else "no result") if not r["repeats"]
                          else three_digits(float(r["ms_per_step"])))
         lines.append("| " + " | ".join(cells) + " |")
@@ -202,8 +208,9 @@ def markdown(rows, engines, sizes, measured):
         return f"{done[-1]['bytes_per_body']} (N = {done[-1]['n']:,})" if done else "-"
     lines.append("| memory, bytes/body, at the largest N run | |" + "".join(f" {largest_run(e)} |" for e in engines))
     first = sizes[0]
-    lines.append(f"| energy drift at N = {first:,}, {by[(engines[0], first)]['steps']} steps | |" + "".join(
-        f" {float(by[(e, first)]['energy_drift']):.1e} |" if by[(e, first)]["repeats"] else " - |" for e in engines))
+    lines.append(f"| energy drift at N = {first:,}, {by[(measured_engines[0], first)]['steps']} steps | |" + "".join(
+        f" {float(by[(e, first)]['energy_drift']):.1e} |" if by.get((e, first), {}).get("repeats") else " - |"
+        for e in engines))
     return "\n".join(lines) + "\n"
 
 
@@ -213,6 +220,8 @@ def figure(rows, figures, engines):
     blocks, plots = [], []
     for e in engines:
         points = [f"{r['n']},{r['ms_per_step']}" for r in rows if r["engine"] == e and r["repeats"]]
+        if not points:
+            continue  # nothing to draw (the table says why); an empty block would stop gnuplot
         # A peer without a result at some N (it failed or ran out of time) says so in the key,
         # rather than leaving its line to end without a word.
         missing = [f"{r['n']:,}" for r in rows
@@ -223,13 +232,16 @@ def figure(rows, figures, engines):
     # Ranges with room around the points: gnuplot's own log ranges run to whole decades, which
     # left the smallest N far from the left edge and the fastest time on the bottom axis.
     measured = [(r["n"], float(r["ms_per_step"])) for r in rows if r["repeats"]]
+    if not measured:
+        print("bench: no engine produced a result, so there is no figure (the table says why)", file=sys.stderr)
+        return
     n_low, n_high = min(n for n, _ in measured), max(n for n, _ in measured)
     t_low, t_high = min(t for _, t in measured), max(t for _, t in measured)
     body = "\n".join([
         "set logscale xy", "set format x '10^{%T}'", "set format y '10^{%T}'",
         f"set xrange [{n_low / 1.25:g}:{n_high * 1.25:g}]", f"set yrange [{t_low / 2:g}:{t_high * 2:g}]",
         "set xlabel 'N / bodies' font label_font", "set ylabel 'time per step / ms' font label_font",
-        "set title 'The 2D gas of issue 12: time per step against N' font title_font",
+        "set title 'A 2D gas: time per step against N' font title_font",
         "set key inside top left vertical Left reverse",
         "plot " + ", ".join(plots)])
     script = blocks[:]
@@ -250,7 +262,7 @@ def read_rows(csv_path):
 PAGE = """# Performance {{#performance}}
 
 How fast the workbook's engine steps, side by side with the engines people would pick
-instead, on one machine in one run. The scene is the 2D gas of issue 12: N discs of radius
+instead, on one machine in one run. The scene is a 2D gas: N discs of radius
 0.05 m and mass 1 kg in a square box of side \\f$L = 10\\sqrt{{N/1000}}\\f$ m with four walls,
 velocities uniform in [-5, 5] m/s, \\f$e = 1\\f$, no gravity, time step 1/60 s, started on a
 grid (`bench/gas.cpp`; each peer's set-up is in `bench/gas_<engine>.cpp`). Reproduce with
@@ -328,12 +340,13 @@ def main():
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    write_results(rows, engines, args.sizes, measured_line(args.repeat, when, load), args)
+    write_results(rows, engines, args.sizes, measured_line(args.repeat, when, load), args,
+                  not_built=[] if args.engines else missing)
 
 
-def write_results(rows, engines, sizes, measured, args):
+def write_results(rows, engines, sizes, measured, args, not_built=()):
     """The table, the page and the figure of `rows`; with --record, copies into bench/results/."""
-    table = markdown(rows, engines, sizes, measured)
+    table = markdown(rows, engines, sizes, measured, not_built)
     (args.out / "speed.md").write_text(table)
     (args.out / "performance.md").write_text(PAGE.format(table=table))
     if not args.no_figure:

@@ -230,6 +230,26 @@ class Bench(unittest.TestCase):
         configure.assert_called_once_with("dev", ["-U", "box2d_DIR"], again=True)
 
 
+    def test_a_missing_peer_is_a_column_that_says_so_never_a_traceback(self):
+        from bench import speed
+        row = {"steps": 60, "repeats": 1, "ms_per_step": "0.5", "bytes_per_body": 500, "energy_drift": "0"}
+        rows = [{**row, "engine": "workbook", "n": n} for n in (1000, 3000)] + \
+               [{**row, "engine": "chipmunk", "n": n, "repeats": 0} for n in (1000, 3000)]  # ran, no result
+        table = speed.markdown(rows, ["workbook", "chipmunk"], [1000, 3000], "Measured now.", not_built=["box2d"])
+        header = next(line for line in table.splitlines() if line.startswith("| N |"))
+        self.assertIn("Box2D 2.4.1 ms/step", header)
+        self.assertEqual(table.count("not built"), 2)
+        self.assertEqual(table.count("no result"), 2)
+        if shutil.which("gnuplot"):
+            with tempfile.TemporaryDirectory() as out:
+                speed.figure(rows, pathlib.Path(out), ["workbook", "chipmunk"])  # chipmunk has no point to draw
+                self.assertTrue((pathlib.Path(out) / "speed.svg").is_file())
+                err = io.StringIO()
+                with contextlib.redirect_stderr(err):
+                    speed.figure(rows[2:], pathlib.Path(out), ["chipmunk"])
+                self.assertIn("no figure", err.getvalue())
+
+
 class Figures(unittest.TestCase):
     def test_the_site_gets_the_figures_just_drawn(self):
         with tempfile.TemporaryDirectory() as scratch:

@@ -1,0 +1,1 @@
+"""Benchmarks (speed.py: ./workbook bench speed); see CMakeLists.txt here."""
