@@ -250,6 +250,40 @@ class Bench(unittest.TestCase):
                 self.assertIn("no figure", err.getvalue())
 
 
+class TestCommand(unittest.TestCase):
+    """./workbook test (which CI runs): its counts and exit status from ctest's summary, with
+    a stand-in ctest and nothing built."""
+
+    def run_test(self, summary, status, *argv):
+        with tempfile.TemporaryDirectory() as bin_dir:
+            ctest = pathlib.Path(bin_dir, "ctest")
+            ctest.write_text(f"#!/bin/sh\necho 'Test project'\necho '{summary}'\nexit {status}\n")
+            ctest.chmod(0o755)
+            out, err = io.StringIO(), io.StringIO()
+            with mock.patch.dict(os.environ, {"PATH": bin_dir + os.pathsep + os.environ["PATH"]}), \
+                    mock.patch.object(building, "build") as build, \
+                    contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+                code = commands.main(["test", *argv])
+        return code, out.getvalue(), [c.args for c in build.call_args_list]
+
+    @unittest.skipIf(os.name == "nt", "a shell script stands in for ctest")
+    def test_both_halves_pass(self):
+        code, out, built = self.run_test("100% tests passed, 0 tests failed out of 42", 0)
+        self.assertEqual((code, built), (0, [("dev",), ("sanitize",)]))
+        self.assertIn("tests: 84 passed, 0 failed", out)
+
+    @unittest.skipIf(os.name == "nt", "a shell script stands in for ctest")
+    def test_a_failure_fails_and_the_sanitizers_can_be_left_out(self):
+        code, out, built = self.run_test("90% tests passed, 1 tests failed out of 10", 8, "--without-sanitizers")
+        self.assertEqual((code, built), (1, [("dev",)]))
+        self.assertIn("tests: 9 passed, 1 failed", out)
+
+    @unittest.skipIf(os.name == "nt", "a shell script stands in for ctest")
+    def test_no_summary_is_a_failure(self):
+        code, out, _ = self.run_test("No tests were found!!!", 0, "--without-sanitizers")
+        self.assertEqual(code, 1)
+
+
 class Figures(unittest.TestCase):
     def test_the_site_gets_the_figures_just_drawn(self):
         with tempfile.TemporaryDirectory() as scratch:
