@@ -23,8 +23,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-import motion
-import strobe
+from plots import motion
+from plots import strobe
 
 FPS = 25
 SIZE = (1280, 720)

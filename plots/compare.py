@@ -22,8 +22,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-import motion
-import strobe
+from plots import motion
+from plots import strobe
 
 SCENES = sorted((motion.PLOTS / "comparison").glob("*.json"))
 RESPONDER_COLOURS = ["#303030", "#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9"]

@@ -21,9 +21,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-import families
-import figure_render
-import spin
+from plots import families
+from plots import figure_render
+from plots import spin
 
 PLOTS = Path(__file__).resolve().parent
 SOURCE = PLOTS.parent

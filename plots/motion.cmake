@@ -17,9 +17,10 @@ function(workbook_strobe_commands chapter kind out_var)
     set(stamp "${_stamps}/${chapter}/${name}.strobe.${kind}.stamp")
     add_custom_command(
       OUTPUT "${stamp}"
-      COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${chapter} "${out_dir}" --scene "${scene}" ${args}
+      COMMAND Python3::Interpreter -m plots.strobe ${chapter} "${out_dir}" --scene "${scene}" ${args}
       COMMAND ${CMAKE_COMMAND} -E touch "${stamp}"
       DEPENDS "${scene}" "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${_motion_common} ${sims}
+      WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"  # python3 -m plots.<module>: the root of the imports
       COMMENT "Strobe picture: ${chapter}/${name} (${kind}) -> book/figures/${chapter}/"
       VERBATIM)
     list(APPEND stamps "${stamp}")
@@ -74,10 +75,11 @@ if(WORKBOOK_FFMPEG)
         set(stamp "${_stamps}/${chapter}/${name}.animation.${kind}.stamp")
         add_custom_command(
           OUTPUT "${stamp}"
-          COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/animate.py" "${scene}" "${out_dir}" ${args}
+          COMMAND Python3::Interpreter -m plots.animate "${scene}" "${out_dir}" ${args}
           COMMAND ${CMAKE_COMMAND} -E touch "${stamp}"
           DEPENDS "${_stamps}/${chapter}/${name}.strobe.${kind}.stamp" "${CMAKE_CURRENT_SOURCE_DIR}/animate.py"
                   "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${_motion_common}
+          WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
           COMMENT "Animation: ${chapter}/${name} (${kind}) -> book/figures/${chapter}/${name}.{mp4,gif}"
           VERBATIM)
         list(APPEND stamps "${stamp}")
@@ -106,11 +108,12 @@ if(WORKBOOK_HAVE_SOLUTIONS)
   set(_comparison_stamp "${_stamps}/comparison.stamp")
   add_custom_command(
     OUTPUT "${_comparison_stamp}"
-    COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/compare.py" "${CMAKE_BINARY_DIR}/book/figures/comparison"
+    COMMAND Python3::Interpreter -m plots.compare "${CMAKE_BINARY_DIR}/book/figures/comparison"
             --sim $<TARGET_FILE:workbook-sim>
     COMMAND ${CMAKE_COMMAND} -E touch "${_comparison_stamp}"
     DEPENDS ${_comparison_scenes} "${CMAKE_CURRENT_SOURCE_DIR}/compare.py" "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py"
             ${_motion_common} workbook-sim
+    WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
     COMMENT "Comparison: one scene under every responder -> book/figures/comparison/"
     VERBATIM)
   add_custom_target(motion-comparison DEPENDS "${_comparison_stamp}")

@@ -10,7 +10,7 @@ chosen view), so the player only scales and draws.
 import json
 import math
 
-import motion
+from plots import motion
 
 # The player interpolates nothing: it shows the nearest stored frame. It stores as many as the
 # film has (25 per second of film), within these bounds, so a turning box turns as smoothly.

@@ -15,7 +15,7 @@ import csv
 import math
 from pathlib import Path
 
-import figure_render
+from plots import figure_render
 
 AXES = "xyz"
 RANKS = ["smallest", "middle", "largest"]

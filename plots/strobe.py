@@ -18,8 +18,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-import motion
-import player_data
+from plots import motion
+from plots import player_data
 
 SNAPSHOTS = 9
 ASPECT = 2.7  # width / height of the data box; the 12:5 canvas less its key and labels

@@ -33,9 +33,7 @@ def main():
     parser.add_argument("--sim", type=Path, required=True)
     parser.add_argument("--source", type=Path, required=True)
     args = parser.parse_args()
-    sys.path.insert(0, str(args.source / "plots"))
-    import animate
-    import motion
+    from plots import animate, motion  # run from the workbook's folder (ctest does)
 
     # The slow-motion rule: the smallest round factor giving at least four seconds of film.
     for duration, factor in ((0.4, 10), (0.9, 5), (2.0, 2), (0.01, 500), (6.0, 1), (0.5, 10)):
@@ -52,7 +50,7 @@ def main():
     with tempfile.TemporaryDirectory() as out:
         out = Path(out)
         motion.simulate(args.sim, scene, out / "head-on-carts.trajectory.csv")
-        result = subprocess.run([sys.executable, str(args.source / "plots/animate.py"), str(scene), str(out)],
+        result = subprocess.run([sys.executable, "-m", "plots.animate", str(scene), str(out)],
                                 capture_output=True, text=True)
         check(result.returncode == 0, f"animate.py failed: {result.stderr}")
         stated = json.loads((out / "head-on-carts.video.json").read_text())

@@ -30,14 +30,13 @@ def main():
     parser.add_argument("--sim", type=Path, required=True)
     parser.add_argument("--source", type=Path, required=True)
     args = parser.parse_args()
-    sys.path.insert(0, str(args.source / "plots"))
-    import motion
+    from plots import motion  # run from the workbook's folder (ctest does)
 
     listed = subprocess.run([str(args.sim), "responders"], capture_output=True, text=True, check=True).stdout.split()
     check("none" in listed and "inelastic" in listed, f"responders: {listed}")
     with tempfile.TemporaryDirectory() as out:
         out = Path(out)
-        result = subprocess.run([sys.executable, str(args.source / "plots/compare.py"), str(out), "--sim", str(args.sim)],
+        result = subprocess.run([sys.executable, "-m", "plots.compare", str(out), "--sim", str(args.sim)],
                                 capture_output=True, text=True)
         check(result.returncode == 0, f"compare.py failed: {result.stderr}")
         for scene in ("ball-drop", "carts-meet"):

@@ -66,10 +66,10 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         scratch = Path(scratch)
         figures, html = scratch / "figures", scratch / "html"
-        for tool in ("figures.py", "strobe.py"):
-            subprocess.run([sys.executable, str(args.source / "plots" / tool), CHAPTER, str(figures / CHAPTER),
+        for module in ("plots.figures", "plots.strobe"):
+            subprocess.run([sys.executable, "-m", module, CHAPTER, str(figures / CHAPTER),
                             "--sim", str(args.sim)], check=True, capture_output=True)
-        subprocess.run([sys.executable, str(args.source / "plots/site_motion.py"), "--figures", str(figures),
+        subprocess.run([sys.executable, "-m", "plots.site_motion", "--figures", str(figures),
                         "--html", str(html), CHAPTER], check=True, capture_output=True)
         check_panels(figures / CHAPTER)
         page = html / "player.html"

@@ -39,9 +39,7 @@ def main():
     parser.add_argument("--source", type=Path, required=True)
     parser.add_argument("--student-sim", type=Path, required=True)
     args = parser.parse_args()
-    sys.path.insert(0, str(args.source / "plots"))
-    import motion
-    import strobe
+    from plots import motion, strobe  # run from the workbook's folder (ctest does)
 
     scenes_dir = args.source / "chapters" / "inelastic" / "scenes"
     with tempfile.TemporaryDirectory() as scratch:
@@ -154,7 +152,7 @@ def main():
         chapters = [line.split("#")[0].strip() for line in (args.source / "chapters/CHAPTERS").read_text().splitlines()]
         for chapter in filter(None, chapters):
             out = scratch / chapter
-            result = subprocess.run([sys.executable, str(args.source / "plots/strobe.py"), chapter, str(out),
+            result = subprocess.run([sys.executable, "-m", "plots.strobe", chapter, str(out),
                                      "--sim", str(args.sim)], capture_output=True, text=True)
             check(result.returncode == 0, f"strobe.py {chapter} failed: {result.stderr}")
             for path in sorted((args.source / "chapters" / chapter / "scenes").glob("*.json")):
@@ -170,7 +168,7 @@ def main():
     with tempfile.TemporaryDirectory() as out:
         out = Path(out)
         scene = scenes_dir / "head-on-carts.json"
-        result = subprocess.run([sys.executable, str(args.source / "plots/strobe.py"), "inelastic", str(out), "--scene",
+        result = subprocess.run([sys.executable, "-m", "plots.strobe", "inelastic", str(out), "--scene",
                                  str(scene), "--sim", str(args.sim), "--student", "--student-sim", str(args.student_sim)],
                                 capture_output=True, text=True)
         check(result.returncode == 0, f"strobe.py --student failed: {result.stderr}")

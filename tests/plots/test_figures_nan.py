@@ -15,7 +15,6 @@ import unittest
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-FIGURES = ROOT / "plots" / "figures.py"
 FAKE = HERE / "nan_after_impact_sim.py"
 SCENE = ROOT / "chapters" / "inelastic" / "scenes" / "head-on-carts.json"
 SIM = None
@@ -31,7 +30,7 @@ class NanInFigures(unittest.TestCase):
     def draw(self, *mode):
         scratch = tempfile.mkdtemp(prefix="figures-nan-")
         env = dict(os.environ, WORKBOOK_REAL_SIM=str(SIM))
-        run = subprocess.run([sys.executable, str(FIGURES), "inelastic", scratch, "--scene", str(SCENE),
+        run = subprocess.run([sys.executable, "-m", "plots.figures", "inelastic", scratch, "--scene", str(SCENE),
                               "--student", "--student-sim", str(FAKE), *mode],
                              capture_output=True, text=True, env=env, timeout=300)
         return run, pathlib.Path(scratch)

@@ -17,12 +17,10 @@ import unittest
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-FIGURES = ROOT / "plots" / "figures.py"
 SCENE = ROOT / "chapters" / "angular-impulse" / "scenes" / "tennis-racket.json"
 SIM = None
 
-sys.path.insert(0, str(ROOT / "plots"))
-import spin  # noqa: E402
+from plots import spin  # noqa: E402  (run from the workbook's folder: ctest does)
 
 
 def read(path):
@@ -38,7 +36,7 @@ def relative(a, b):
 class SpinFigure(unittest.TestCase):
     def draw(self, *mode):
         out = pathlib.Path(tempfile.mkdtemp(prefix="spin-figure-"))
-        run = subprocess.run([sys.executable, str(FIGURES), "angular-impulse", str(out), "--scene", str(SCENE), *mode],
+        run = subprocess.run([sys.executable, "-m", "plots.figures", "angular-impulse", str(out), "--scene", str(SCENE), *mode],
                              capture_output=True, text=True, timeout=300)
         self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
         return out

@@ -79,17 +79,15 @@ def run_program(argv, cwd=None, stdout=None):
     return subprocess.run([str(a) for a in argv], cwd=cwd, stdout=stdout).returncode
 
 
-def run_python(script_or_module, args, cwd=None):
-    """Runs one of the workbook's Python programs: a module (grader.grade) with the workbook's
-    folder as the root of its imports, or a script file (plots/figures.py) of its own."""
-    if script_or_module.endswith(".py"):
-        return run_program([sys.executable, edition.ROOT / script_or_module, *args], cwd=cwd)
+def run_python(module, args, cwd=None):
+    """Runs one of the workbook's Python programs (plots.figures, grader.grade) in a process of
+    its own, with the workbook's folder as the root of its imports; cwd: where the user typed
+    the command, unless given."""
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join([str(edition.ROOT), *host.path_list(env.get("PYTHONPATH"))])
     sys.stdout.flush()
     sys.stderr.flush()
-    return subprocess.run([sys.executable, "-m", script_or_module, *[str(a) for a in args]], cwd=cwd,
-                          env=env).returncode
+    return subprocess.run([sys.executable, "-m", module, *[str(a) for a in args]], cwd=cwd, env=env).returncode
 
 
 def tool(name):
@@ -298,7 +296,7 @@ def run_figures(args, raw):
         building.build("dev", *sims)
         out = from_caller(args.out) if args.out else BOOK / "figures" / "scenes"
         scene_options = [a for scene in scenes for a in ("--scene", scene)]
-        status = run_python("plots/figures.py", ["scenes", out, *scene_options, *options])
+        status = run_python("plots.figures", ["scenes", out, *scene_options, *options])
         if status != 0:
             return status
         say(f"Figures are in {out}{os.sep}")
@@ -427,16 +425,16 @@ def run_bench(args, raw):
         out.mkdir(parents=True, exist_ok=True)
         status = run_program([tool("workbook-accuracy"), "bench", "--out", out])
         if status == 0:
-            status = run_python("plots/accuracy.py", [out])
+            status = run_python("plots.accuracy", [out])
         if status == 0:
             say(f"Figures and CSV in {out}")
         return status
     if args.kind == "speed":
         if "-h" in rest or "--help" in rest:
-            return run_python("bench/speed.py", ["--help"])
+            return run_python("bench.speed", ["--help"])
         building.prepare_bench()
         building.build("dev", "workbook-gas", to_stderr=True)
-        status = run_python("bench/speed.py", ["--gas", host.built_program(edition.build_dir("dev") / "bench",
+        status = run_python("bench.speed", ["--gas", host.built_program(edition.build_dir("dev") / "bench",
                                                                             "workbook-gas"),
                                                "--out", BOOK / "bench", "--figures", BOOK / "figures" / "bench", *rest],
                             cwd=edition.ROOT)
