@@ -185,8 +185,22 @@ class Windows(unittest.TestCase):
             self.assertNotIn("clang", wanted)
         advice = prerequisites.install_advice([("cmake", "every command")])
         self.assertIn("Windows:", advice)
-        self.assertIn("README.md, section Windows", advice)
-        self.assertIn("README.md, section Windows", help_of(entry("setup")))
+        name, heading = prerequisites.windows_guide()
+        self.assertIn(f"## {heading}", (ROOT / name).read_text(encoding="utf-8").replace("### ", "## "))
+        self.assertIn("Windows", heading)
+        for text in (advice, help_of(entry("setup"))):
+            self.assertIn(f"{name}, section '{heading}'", " ".join(text.split()))
+
+    def test_windows_builds_with_the_windows_twin_of_a_preset_where_there_is_one(self):
+        with tempfile.TemporaryDirectory() as root:
+            pathlib.Path(root, "CMakePresets.json").write_text(
+                '{"configurePresets": [{"name": "dev"}, {"name": "student"}, {"name": "windows-student"}]}')
+            with mock.patch.object(edition, "ROOT", pathlib.Path(root)):
+                with self.windows():
+                    self.assertEqual(building.cmake_preset("student"), "windows-student")
+                    self.assertEqual(building.cmake_preset("dev"), "dev")  # no twin: the preset itself
+                with mock.patch.object(host, "windows", lambda: False):
+                    self.assertEqual(building.cmake_preset("student"), "student")
 
     def test_a_cp1252_or_ascii_console_gets_readable_ascii(self):
         for encoding in ("cp1252", "ascii"):

@@ -1,6 +1,7 @@
 """Configuring and building the CMake presets (CMakePresets.json): dev (the whole workbook),
 student (what ./workbook check builds) and sanitize (./workbook test's second half). Build
 folders are build/<preset>/; each is configured once, then built incrementally."""
+import json
 import os
 import re
 import subprocess
@@ -14,6 +15,19 @@ from tools.cli.console import Failure, say
 # NOTFOUND; they are forgotten so that the next configure looks again.
 PEER_CACHE_ENTRY = re.compile(r"^((?:WORKBOOK_(?:PEER_)?(?:CHIPMUNK|BOX2D|BULLET)\w*)|box2d_DIR|benchmark_DIR|"
                               r"PKG_CONFIG_EXECUTABLE)(?::\w+)?=(.*)$")
+
+
+def cmake_preset(preset):
+    """The CMake preset that makes build/<preset> on this system: on Windows its windows-<preset>
+    twin (Visual Studio's compiler, the libraries from vcpkg) where CMakePresets.json has one."""
+    if not host.windows():
+        return preset
+    try:
+        presets = json.loads((edition.ROOT / "CMakePresets.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return preset
+    names = {p.get("name") for p in presets.get("configurePresets", [])}
+    return f"windows-{preset}" if f"windows-{preset}" in names else preset
 
 
 def _run(argv, **options):
@@ -33,7 +47,7 @@ def configure(preset, extra=(), again=False):
     say(f"Configuring build/{preset}")
     extra = list(extra)
     # The dev preset names g++; a system with another compiler alone (Clang, macOS) uses that.
-    if preset == "dev" and not host.which("g++"):
+    if cmake_preset(preset) == "dev" and not host.which("g++"):
         cxx = os.environ.get("CXX") or host.which("clang++", "c++", "cl", "clang-cl")
         if not cxx:
             raise Failure("no C++ compiler found (g++, clang++ or c++)")
@@ -41,7 +55,8 @@ def configure(preset, extra=(), again=False):
         extra.append(f"-DCMAKE_CXX_COMPILER={cxx}")
     log = edition.ROOT / f"build-{preset}.log"
     with open(log, "wb") as out:
-        status = _run(["cmake", "--preset", preset, *extra], stdout=out, stderr=subprocess.STDOUT).returncode
+        status = _run(["cmake", "--preset", cmake_preset(preset), *extra], stdout=out,
+                      stderr=subprocess.STDOUT).returncode
     if status != 0:
         sys.stderr.write(log.read_text(errors="replace"))
         log.unlink()
@@ -54,7 +69,7 @@ def build(preset, *targets, to_stderr=False):
     prerequisites.setup_tools()
     configure(preset)
     say(f"Building build/{preset}" + (f" ({' '.join(targets)})" if targets else ""))
-    argv = ["cmake", "--build", "--preset", preset]
+    argv = ["cmake", "--build", "--preset", cmake_preset(preset)]
     if targets:
         argv += ["--target", *targets]
     status = _run(argv, stdout=sys.stderr if to_stderr else None).returncode

@@ -144,7 +144,7 @@ CTEST_SUMMARY = re.compile(r"tests passed, (\d+) tests? failed out of (\d+)")
 def _ctest(preset):
     """Runs ctest --preset, its output shown as it comes; ((failed, total) or None, status)."""
     sys.stdout.flush()
-    process = subprocess.Popen(["ctest", "--preset", preset, "-j", "2"], cwd=edition.ROOT, stdout=subprocess.PIPE,
+    process = subprocess.Popen(["ctest", "--preset", building.cmake_preset(preset), "-j", "2"], cwd=edition.ROOT, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True, errors="replace")
     counts = None
     for line in process.stdout:
@@ -161,10 +161,10 @@ def _ctest(preset):
          "Checks for the tools the workbook needs. When something is missing it installs it with apt (Debian, "
          "Ubuntu: Catch2 3 from bookworm-backports on bookworm) or, without apt, prints what to install on Fedora, "
          "Arch, macOS or Windows. Every other command runs it first; it does nothing when all are there. "
-         "On Windows: " + prerequisites.WINDOWS_ADVICE + ".")
+         "On Windows: " + prerequisites.windows_advice() + ".")
 def run_setup(args, raw):
     if host.windows():
-        print(f"Windows: {prerequisites.WINDOWS_ADVICE}.")
+        print(f"Windows: {prerequisites.windows_advice()}.")
     prerequisites.setup_tools()
     if host.windows():
         missing = prerequisites.missing_tools()
@@ -453,7 +453,8 @@ def run_bench(args, raw):
 
 def _has_target(preset, target):
     """Whether the configured build has the target (a target left out for a missing package is not there)."""
-    run = subprocess.run(["cmake", "--build", "--preset", preset, "--target", "help"], cwd=edition.ROOT,
+    run = subprocess.run(["cmake", "--build", "--preset", building.cmake_preset(preset), "--target", "help"],
+                         cwd=edition.ROOT,
                          capture_output=True, text=True)
     return run.returncode != 0 or re.search(rf"^{re.escape(target)}\b", run.stdout, re.MULTILINE) is not None
 

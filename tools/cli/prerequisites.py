@@ -24,8 +24,27 @@ PACKAGES = ["cmake", "ninja-build", "g++", "clang", "libclang-rt-14-dev", "pytho
 BENCH_PACKAGES = ["libbenchmark-dev", "libchipmunk-dev", "libbox2d-dev", "libbullet-dev", "pkgconf"]
 
 EVERY_COMMAND = "every command"
-WINDOWS_ADVICE = ("follow README.md, section Windows: Visual Studio 2022 (Desktop development with C++, "
-                  "which brings CMake and vcpkg), then py workbook.py check CHAPTER from a Developer PowerShell")
+
+
+def windows_guide():
+    """(file, heading) of the README section that takes a Windows student step by step: the
+    student edition's README (grader/student-README.md here, README.md in that edition)."""
+    for name in ("grader/student-README.md", "README.md"):
+        try:
+            lines = (edition.ROOT / name).read_text(encoding="utf-8").splitlines()
+        except OSError:
+            continue
+        for line in lines:
+            if line.startswith("#") and "Windows" in line:
+                return name, line.lstrip("#").strip()
+    return "README.md", "Windows"
+
+
+def windows_advice():
+    name, heading = windows_guide()
+    return (f"follow {name}, section '{heading}': Visual Studio 2022 with its C++ workload (it brings CMake, "
+            f"Ninja and vcpkg), then py workbook.py check CHAPTER in its Developer PowerShell")
+
 
 # One tool a line: id | what needs it ("every command" stops without it) | Fedora (dnf) |
 # Arch (pacman) | macOS (Homebrew). A "-" means no package: the note after it says what to do.
@@ -144,7 +163,7 @@ def install_advice(missing):
                 packages.append(field)
         lines.append(f"  {name + ':':<17} {command + ' ' + ' '.join(packages) if packages else ''}".rstrip())
         lines += notes
-    lines.append(f"  {'Windows:':<17} {WINDOWS_ADVICE}")
+    lines.append(f"  {'Windows:':<17} {windows_advice()}")
     return "\n".join(lines)
 
 
