@@ -144,8 +144,8 @@ CTEST_SUMMARY = re.compile(r"tests passed, (\d+) tests? failed out of (\d+)")
 def _ctest(preset):
     """Runs ctest --preset, its output shown as it comes; ((failed, total) or None, status)."""
     sys.stdout.flush()
-    process = subprocess.Popen(["ctest", "--preset", building.cmake_preset(preset), "-j", "2"], cwd=edition.ROOT, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, errors="replace")
+    process = subprocess.Popen(["ctest", "--preset", building.cmake_preset(preset), "-j", "2"], cwd=edition.ROOT,
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
     counts = None
     for line in process.stdout:
         sys.stdout.write(line)
@@ -177,7 +177,14 @@ def run_setup(args, raw):
 def check_time_limit():
     """Seconds each test case of `check` may take: WORKBOOK_CHECK_TIME_LIMIT, or check.py's default."""
     from tools import check
-    return float(os.environ.get("WORKBOOK_CHECK_TIME_LIMIT") or check.DEFAULT_TIME_LIMIT)
+    given = os.environ.get("WORKBOOK_CHECK_TIME_LIMIT")
+    try:
+        limit = float(given) if given else check.DEFAULT_TIME_LIMIT
+    except ValueError:
+        limit = -1
+    if not limit > 0:
+        raise Refusal(f"WORKBOOK_CHECK_TIME_LIMIT must be a positive number of seconds (it is '{given}')")
+    return limit
 
 
 @command("check", "Students", "build your skeleton/ code and report each step of CHAPTER: pass, or which law it breaks",
@@ -286,14 +293,16 @@ def run_figures(args, raw):
     student = args.student and full()  # the student edition draws your code already
     if scenes:
         if full():
-            sims, options = ["workbook-sim"], ["--sim", tool("workbook-sim")]
-            if student:
-                sims.append("workbook-sim-student")
-                options += ["--student", "--student-sim", tool("workbook-sim-student")]
+            sims = ["workbook-sim"] + (["workbook-sim-student"] if student else [])
         else:
             sims = ["workbook-sim-student"]
-            options = ["--no-reference", "--student", "--student-sim", tool("workbook-sim-student")]
         building.build("dev", *sims)
+        if full():
+            options = ["--sim", tool("workbook-sim")]
+            if student:
+                options += ["--student", "--student-sim", tool("workbook-sim-student")]
+        else:
+            options = ["--no-reference", "--student", "--student-sim", tool("workbook-sim-student")]
         out = from_caller(args.out) if args.out else BOOK / "figures" / "scenes"
         scene_options = [a for scene in scenes for a in ("--scene", scene)]
         status = run_python("plots.figures", ["scenes", out, *scene_options, *options])
@@ -416,6 +425,10 @@ BENCH_KINDS = ("accuracy", "speed", "stages")
          listed=full, refusal=NO_SOLUTIONS)
 def run_bench(args, raw):
     rest = list(args.rest)
+    if args.kind != "speed" and ("-h" in rest or "--help" in rest):
+        parser = command_parser(next(c for c in COMMANDS if c.name == "bench"))
+        parser.print_help()
+        return 0
     if args.kind == "accuracy":
         if len(rest) > 1 or any(a.startswith("-") for a in rest):
             raise Refusal("bench accuracy takes at most one folder")
@@ -520,7 +533,11 @@ class Parser(argparse.ArgumentParser):
 def _describe(entry):
     text = entry.description
     if entry.name == "check":
-        text = text.format(limit=check_time_limit())
+        try:
+            text = text.format(limit=check_time_limit())
+        except Refusal:  # said when the command runs; the help names the default
+            from tools import check
+            text = text.format(limit=check.DEFAULT_TIME_LIMIT)
     return text
 
 

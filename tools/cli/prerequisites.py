@@ -68,8 +68,9 @@ bubblewrap|grade|bubblewrap|bubblewrap|- (Linux only)
 zip|grade, pack|zip unzip|zip unzip|zip
 chromium|test (the site in a browser)|chromium|chromium|--cask chromium"""
 TABLE = {line.split("|")[0]: line.split("|") for line in TOOLS.splitlines()}
-# The C++ libraries: on Windows vcpkg brings them while CMake configures (vcpkg.json).
-LIBRARIES = {"catch2-3", "fmt", "nlohmann-json", "cli11"}
+# The C++ libraries, by the name of their CMake package: on Windows vcpkg brings them while
+# CMake configures (vcpkg.json).
+LIBRARIES = {"catch2-3": "Catch2", "fmt": "fmt", "nlohmann-json": "nlohmann_json", "cli11": "CLI11"}
 
 
 def wanted_tools():
@@ -117,8 +118,7 @@ def _clang_with_sanitizers():
 
 def tool_found(tool_id):
     if host.windows() and tool_id in LIBRARIES:
-        return _vcpkg() or bool(host.cmake_package_dir(
-            {"catch2-3": "Catch2", "fmt": "fmt", "nlohmann-json": "nlohmann_json", "cli11": "CLI11"}[tool_id]))
+        return _vcpkg() or host.cmake_package_dir(LIBRARIES[tool_id]) is not None
     if tool_id == "c++":
         cxx = os.environ.get("CXX", "").split()
         return bool((cxx and host.which(cxx[0])) or host.which("g++", "clang++", "c++", "cl", "clang-cl"))
@@ -126,8 +126,8 @@ def tool_found(tool_id):
         return True  # this very program runs on it
     if tool_id == "catch2-3":
         return _catch2_3()
-    if tool_id in ("fmt", "nlohmann-json", "cli11"):
-        return host.cmake_package_dir({"fmt": "fmt", "nlohmann-json": "nlohmann_json", "cli11": "CLI11"}[tool_id]) is not None
+    if tool_id in LIBRARIES:
+        return host.cmake_package_dir(LIBRARIES[tool_id]) is not None
     if tool_id == "mathjax2":
         return os.path.isfile(os.path.join(os.environ.get("WORKBOOK_MATHJAX_DIR") or "/usr/share/javascript/mathjax",
                                            "MathJax.js"))
