@@ -298,6 +298,31 @@ class TestCommand(unittest.TestCase):
         self.assertEqual(code, 1)
 
 
+class OneWording(unittest.TestCase):
+    """A crash and a time limit read the same from ./workbook check and from the grader (tools/wording.py)."""
+
+    def test_check_and_the_grader_say_the_same(self):
+        import signal
+        from tools import wording
+        segv = getattr(signal, "SIGSEGV", 11)
+        crash = wording.crashed(signal_number=segv)
+        self.assertIn("a segmentation fault", crash)
+        self.assertIn(wording.crashed(-segv, where="in step 3"), check.judge("c", 3, -segv, False, "", "", 10).message)
+        self.assertIn(wording.timed_out(2.5, "in step 4"), check.judge("c", 4, 0, True, "", "", 2.5).message)
+        self.assertEqual(wording.crashed(0xC0000005), crash)  # Windows' access violation is the same crash
+        self.assertIsNone(wording.crashed(1))
+        if not edition.have_grader() or os.name == "nt":
+            return
+        from types import SimpleNamespace
+        from grader import runner
+        limits = SimpleNamespace(wall_seconds=2.5)
+        ended = dict(timed_out=False, flooded=False, disk_full=False, signal=None, error=None, returncode=None)
+        passed, said = runner.judge((1, None), None, SimpleNamespace(**{**ended, "timed_out": True}), limits, "")
+        self.assertEqual((passed, said), (False, wording.timed_out(2.5)))
+        passed, said = runner.judge((1, None), None, SimpleNamespace(**{**ended, "signal": segv}), limits, "")
+        self.assertIn(f"your code {crash}", said)
+
+
 class Figures(unittest.TestCase):
     def test_the_site_gets_the_figures_just_drawn(self):
         with tempfile.TemporaryDirectory() as scratch:
