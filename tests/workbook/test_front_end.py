@@ -219,6 +219,35 @@ class Windows(unittest.TestCase):
         self.assertIn("py workbook.py", commands.overview() if not host.windows() else commands.PROG)
 
 
+class Apt(unittest.TestCase):
+    """What the front end asks apt for, with apt itself mocked: sudo when not root, Catch2 3 from
+    bookworm-backports on bookworm."""
+
+    def test_missing_packages_are_installed_with_sudo_and_catch2_from_backports(self):
+        ran = []
+        with mock.patch.object(prerequisites, "missing_packages", lambda: ["gnuplot-nox", "catch2"]), \
+                mock.patch.object(prerequisites, "ensure_backports"), \
+                mock.patch.object(prerequisites, "_bookworm", lambda: True), \
+                mock.patch.object(prerequisites.os, "geteuid", lambda: 1000, create=True), \
+                mock.patch.object(prerequisites.host, "which", lambda *names: "/usr/bin/sudo"), \
+                mock.patch.object(prerequisites.subprocess, "run",
+                                  lambda argv, **kw: ran.append(argv) or subprocess.CompletedProcess(argv, 0)), \
+                contextlib.redirect_stderr(io.StringIO()):
+            prerequisites.install_with_apt()
+        self.assertEqual(ran, [
+            ["sudo", "apt-get", "update", "-qq"],
+            ["sudo", "env", "DEBIAN_FRONTEND=noninteractive", "apt-get", "install", "-y", "-qq",
+             "--no-install-recommends", "gnuplot-nox"],
+            ["sudo", "env", "DEBIAN_FRONTEND=noninteractive", "apt-get", "install", "-y", "-qq",
+             "-t", "bookworm-backports", "catch2"]])
+
+    def test_without_sudo_and_not_root_it_says_so(self):
+        with mock.patch.object(prerequisites.os, "geteuid", lambda: 1000, create=True), \
+                mock.patch.object(prerequisites.host, "which", lambda *names: None):
+            with self.assertRaisesRegex(console.Failure, "need root to run: apt-get update"):
+                prerequisites.as_root(["apt-get", "update"])
+
+
 class Bench(unittest.TestCase):
     def test_peers_a_configure_did_not_find_are_forgotten(self):
         with tempfile.TemporaryDirectory() as folder:

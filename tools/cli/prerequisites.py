@@ -222,10 +222,8 @@ def ensure_backports():
     subprocess.run(argv, input=text, text=True, stdout=subprocess.DEVNULL, check=True)
 
 
-def apt_install(packages, backports=False):
-    options = ["-t", "bookworm-backports"] if backports else []
-    as_root(["env", "DEBIAN_FRONTEND=noninteractive", "apt-get", "install", "-y", "-qq", "--no-install-recommends",
-             *options, *packages])
+def apt_install(packages, options=("--no-install-recommends",)):
+    as_root(["env", "DEBIAN_FRONTEND=noninteractive", "apt-get", "install", "-y", "-qq", *options, *packages])
 
 
 def install_with_apt():
@@ -239,7 +237,7 @@ def install_with_apt():
     if regular:
         apt_install(regular)
     if "catch2" in missing:
-        apt_install(["catch2"], backports=_bookworm())
+        apt_install(["catch2"], ["-t", "bookworm-backports"] if _bookworm() else [])
 
 
 def have_apt():
