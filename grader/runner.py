@@ -143,7 +143,8 @@ def judge(checker, case, student, limits, printed):
         return False, (f"your code wrote more than {limits.disk_bytes >> 20} MiB to disk, so the test was "
                        f"stopped{printed}")
     if run.signal is not None:
-        return False, f"your code {wording.crashed(signal_number=run.signal)} [{_signal_name(run.signal)}]{printed}"
+        return False, (f"your code {wording.crashed(signal_number=run.signal)} [{_signal_name(run.signal)}, "
+                       f"signal {run.signal}]{printed}")
     if run.returncode == 0:
         return False, ("your program exited early with status 0 before the test finished (does your code call "
                        f"exit()?){printed}")
