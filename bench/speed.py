@@ -290,8 +290,9 @@ divided by N. Energy drift is \\f$|E_\\text{{end}} - E_\\text{{start}}| / E_\\te
 the kinetic energy: the workbook's elastic impulse keeps it at rounding level, the peers'
 iterative solvers (in single precision for Box2D and Bullet) do not. A cell reads *no result*
 where a peer's runs failed or did not finish within the bench's limit (`--timeout`, 300 s a run
-by default), and *not run* where the bench was told to leave the peers out at that N
-(`--peers-up-to`).
+by default), *not run* where the bench was told to leave the peers out at that N
+(`--peers-up-to`), and *not built* where this build has not got the peer (its package was
+missing when it was configured).
 
 \\image html bench/speed.svg "Time per step against the number of bodies N, log-log: a slope of 1 is linear cost."
 """
