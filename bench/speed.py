@@ -321,9 +321,13 @@ def main():
     PEERS_UP_TO[0] = args.peers_up_to
     if args.rewrite:
         rows = read_rows(args.out / "speed.csv")
-        measured = (args.out / "speed.md").read_text().splitlines()[0]
-        write_results(rows, [e for e in ENGINES if any(r["engine"] == e for r in rows)],
-                      sorted({r["n"] for r in rows}), measured, args)
+        table = (args.out / "speed.md").read_text().splitlines()
+        measured = table[0]
+        ran = [e for e in ENGINES if any(r["engine"] == e for r in rows)]
+        # The peers the run had not got: columns of its table, without rows in its CSV.
+        header = next((line for line in table if line.startswith("| N |")), "")
+        not_built = [e for e in ENGINES if e not in ran and f" {TITLES[e]} ms/step |" in header]
+        write_results(rows, ran, sorted({r["n"] for r in rows}), measured, args, not_built=not_built)
         return
 
     engines = args.engines or available_engines(args.gas)
