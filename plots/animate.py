@@ -132,7 +132,8 @@ def main():
             runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), False))
         if args.student or args.no_reference:
             t = args.out / f"{stem}.student.trajectory.csv"
-            runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), True))
+            # Alone (the student edition) the bodies keep their own colours, as the key lists them.
+            runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), not args.no_reference))
         out_stem = args.out / (stem + (".student" if args.student or args.no_reference else ""))
         with tempfile.TemporaryDirectory() as frames:
             factor, count = render(scene, runs, out_stem, Path(frames))

@@ -8,7 +8,8 @@ ground or walls, spheres as circles, boxes with their orientation, and at the fi
 of each touch the contact point, its normal (from body 2 towards body 1) and the size of the
 impulse the responder gave. One metre is as long across as up. The view follows the rule in
 plots/motion.py (choose_view). With --student the student's bodies are drawn over the
-reference's, dashed, in another colour, as <scene>-strobe.student.*.
+reference's, dashed, in another colour, as <scene>-strobe.student.*; with --no-reference (the
+student edition) the student's bodies are drawn alone, in their own colours.
 
     strobe.py inelastic build/dev/book/figures/inelastic --sim build/dev/tools/workbook-sim
 """
@@ -293,7 +294,9 @@ def main():
                 if args.student:
                     t, c = motion.simulate(args.student_sim, path, args.out / f"{path.stem}.student.trajectory.csv",
                                            stride)
-                    runs.append((motion.Trajectory(t), motion.read_contacts(c), True))
+                    # Dashed in the student's colour over the reference's; alone (the student
+                    # edition) in the bodies' own colours, as the key lists them.
+                    runs.append((motion.Trajectory(t), motion.read_contacts(c), not args.no_reference))
                 view, box = draw(scene, args.out, path.stem + "-strobe" + suffix, runs)
                 # The site's player shows the same view, in a 16:9 box like the animations.
                 player_box = picture_box(scene, [(r[0], r[1]) for r in runs], view, aspect=16 / 9, count=41)
