@@ -15,11 +15,14 @@ function(workbook_strobe_commands chapter kind out_var)
   foreach(scene IN LISTS scenes)
     get_filename_component(name "${scene}" NAME_WE)
     set(stamp "${_stamps}/${chapter}/${name}.strobe.${kind}.stamp")
+    # The reference's motion shipped for the student edition (plots/reference_runs.py), if any.
+    file(GLOB shipped_motion "${PROJECT_SOURCE_DIR}/chapters/${chapter}/reference-runs/${name}.trajectory*.csv")
     add_custom_command(
       OUTPUT "${stamp}"
       COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${chapter} "${out_dir}" --scene "${scene}" ${args}
       COMMAND ${CMAKE_COMMAND} -E touch "${stamp}"
-      DEPENDS "${scene}" "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${_motion_common} ${sims}
+      DEPENDS "${scene}" ${shipped_motion} "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" "${CMAKE_CURRENT_SOURCE_DIR}/reference_runs.py"
+              ${_motion_common} ${sims}
       COMMENT "Strobe picture: ${chapter}/${name} (${kind}) -> book/figures/${chapter}/"
       VERBATIM)
     list(APPEND stamps "${stamp}")

@@ -6,8 +6,11 @@ time are no secret: the chapter pages describe them. They live in
 chapters/<chapter>/reference-runs/<scene>.csv (a swept scene: <scene>.fraction-<f>.csv, one per
 fraction), the CSV `workbook-sim run --csv` writes, rounded to 10 significant digits, so that
 plots/figures.py draws a student's curves over the reference's in the student edition too, as
-it does in the full edition with the reference simulator. A scene of a box turning freely
-(responder "none", plots/spin.py) has none: no student code acts on it.
+it does in the full edition with the reference simulator. Beside them, <scene>.trajectory.csv
+and <scene>.trajectory.contacts.csv (`--trajectory` at the stride the motion pictures use,
+8 significant digits) let plots/strobe.py and plots/animate.py draw the student's bodies over
+the reference's. A scene of a box turning freely (responder "none", plots/spin.py) has none:
+no student code acts on it.
 
     reference_runs.py write --sim build/dev/tools/workbook-sim     after a change to a scene or the engine
     reference_runs.py check --sim build/dev/tools/workbook-sim     the shipped runs are the reference's (ctest)
@@ -22,10 +25,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+import motion
 import spin
 
 SOURCE = Path(__file__).resolve().parent.parent
 DIGITS = 10
+TRAJECTORY_DIGITS = 8  # a hundredth of a millimetre in a scene of metres: finer than any picture
 # A shipped value agrees with a fresh run when it differs by less than this, relative to the
 # larger of the value and its column's largest magnitude: the 10 digits kept, with room for
 # another compiler's last bits.
@@ -46,6 +51,36 @@ def run_path(scene, fraction=None):
     chapter = scene.resolve().parent.parent.name
     suffix = "" if fraction is None else f".fraction-{fraction:g}"
     return folder(chapter) / f"{scene.stem}{suffix}.csv"
+
+
+def trajectory_path(scene):
+    """Where the reference's trajectory of a scene is shipped (its contacts: motion.contacts_path)."""
+    chapter = scene.resolve().parent.parent.name
+    return folder(chapter) / f"{scene.stem}.trajectory.csv"
+
+
+def has_trajectory(scene):
+    """True for a scene whose motion the student's code decides (not a free spin)."""
+    return spin.watched_body(json.loads(scene.read_text())) is None
+
+
+def rounded(path, digits):
+    """The rows of a CSV with every number rounded to `digits` significant digits (names kept)."""
+    def one(value):
+        try:
+            return f"{float(value):.{digits}g}"
+        except ValueError:
+            return value
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return [rows[0]] + [[one(x) for x in row] for row in rows[1:]]
+
+
+def simulate_motion(sim, scene, scratch):
+    """(trajectory rows, contacts rows) of the scene at the motion pictures' stride."""
+    stride = motion.stride_for(motion.Scene(scene).spec)
+    trajectory, contacts = motion.simulate(sim, scene, Path(scratch, "motion.trajectory.csv"), stride)
+    return rounded(trajectory, TRAJECTORY_DIGITS), rounded(contacts, TRAJECTORY_DIGITS)
 
 
 def shipped(scene):
@@ -104,25 +139,48 @@ def write(sim):
                     path.write_text(text_of(simulate(sim, description, scratch)))
                     wanted.add(path.name)
                     print(f"reference-runs: {path.relative_to(SOURCE)}")
+                if has_trajectory(scene):
+                    trajectory, contacts = simulate_motion(sim, scene, scratch)
+                    for path, rows in ((trajectory_path(scene), trajectory),
+                                       (motion.contacts_path(trajectory_path(scene)), contacts)):
+                        path.write_text(text_of(rows))
+                        wanted.add(path.name)
+                        print(f"reference-runs: {path.relative_to(SOURCE)}")
             for stale in target.glob("*.csv"):
                 if stale.name not in wanted:
                     stale.unlink()
                     print(f"reference-runs: removed {stale.relative_to(SOURCE)} (no such scene)")
 
 
-def disagreement(shipped, fresh):
+def number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def disagreement(shipped, fresh, agreement=AGREEMENT):
     """None when two tables agree, else what differs first."""
     if shipped[0] != fresh[0]:
         return f"columns {shipped[0]} instead of {fresh[0]}"
     if len(shipped) != len(fresh):
         return f"{len(shipped) - 1} samples instead of {len(fresh) - 1}"
-    values = [[float(x) for x in row] for row in fresh[1:]]
-    scale = [max((abs(row[i]) for row in values if math.isfinite(row[i])), default=0.0) for i in range(len(fresh[0]))]
-    for n, (a_row, b_row) in enumerate(zip(shipped[1:], values), 1):
+    values = [[number(x) for x in row] for row in fresh[1:]]
+    scale = [max((abs(row[i]) for row in values if row[i] is not None and math.isfinite(row[i])), default=0.0)
+             for i in range(len(fresh[0]))]
+    for n, (a_row, b_row, text_row) in enumerate(zip(shipped[1:], values, fresh[1:]), 1):
         for i, (a, b) in enumerate(zip(a_row, b_row)):
-            if abs(float(a) - b) > AGREEMENT * max(abs(b), scale[i]) + 1e-300:
+            if b is None:
+                if a != text_row[i]:
+                    return f"sample {n}, {fresh[0][i]}: {a} shipped, {text_row[i]} now"
+            elif number(a) is None or abs(number(a) - b) > agreement * max(abs(b), scale[i]) + 1e-300:
                 return f"sample {n}, {fresh[0][i]}: {a} shipped, {b!r} now"
     return None
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.reader(f))
 
 
 def check(sim):
@@ -134,11 +192,18 @@ def check(sim):
                 if not path.is_file():
                     problems.append(f"{path.relative_to(SOURCE)} is missing")
                     continue
-                with open(path, newline="") as f:
-                    shipped = list(csv.reader(f))
-                problem = disagreement(shipped, simulate(sim, description, scratch))
+                problem = disagreement(read_rows(path), simulate(sim, description, scratch))
                 if problem:
                     problems.append(f"{path.relative_to(SOURCE)} is not the reference's run: {problem}")
+            if has_trajectory(scene):
+                fresh = simulate_motion(sim, scene, scratch)
+                for path, rows in zip((trajectory_path(scene), motion.contacts_path(trajectory_path(scene))), fresh):
+                    if not path.is_file():
+                        problems.append(f"{path.relative_to(SOURCE)} is missing")
+                        continue
+                    problem = disagreement(read_rows(path), rows, agreement=1e-6)
+                    if problem:
+                        problems.append(f"{path.relative_to(SOURCE)} is not the reference's motion: {problem}")
     for problem in problems:
         print("reference-runs:", problem)
     if problems:

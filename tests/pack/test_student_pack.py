@@ -84,6 +84,9 @@ class StudentPackTest(unittest.TestCase):
                 for row in rows:
                     [float(value) for value in row.split(",")]
                 shipped += 1
+            if reference_runs.has_trajectory(scene):  # the strobe pictures and the player draw over it
+                trajectory = reference_runs.trajectory_path(scene).relative_to(ROOT)
+                self.assertTrue((self.pack / trajectory).is_file(), f"{trajectory} is not in the pack")
         self.assertGreater(shipped, 20)
 
     def test_help_and_readme_speak_only_of_what_the_pack_has(self):
