@@ -103,7 +103,9 @@ else()
   message(STATUS "ffmpeg not found: the animations targets are not available (apt install ffmpeg)")
 endif()
 
-# One scene under every responder the simulator has (plots/comparison/*.json), part of `figures`.
+# One scene under every responder the simulator has (plots/comparison/*.json), part of `figures`
+# and of every chapter's figures-<chapter> (what `./workbook figures` builds), so that the
+# comparison/ folder the README describes is there after any of them; a stamp keeps it to once.
 if(WORKBOOK_HAVE_SOLUTIONS)
   file(GLOB _comparison_scenes CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/comparison/*.json")
   set(_comparison_stamp "${_stamps}/comparison.stamp")
@@ -118,4 +120,7 @@ if(WORKBOOK_HAVE_SOLUTIONS)
     VERBATIM)
   add_custom_target(motion-comparison DEPENDS "${_comparison_stamp}")
   add_dependencies(figures motion-comparison)
+  foreach(chapter IN LISTS WORKBOOK_CHAPTERS)
+    add_dependencies(figures-${chapter} motion-comparison)
+  endforeach()
 endif()
