@@ -31,6 +31,8 @@ TEST_CASE("a case prints its numbers with 6 significant digits", "[feedback]") {
     CHECK(format(0.018000000000000016) == "0.018");
     CHECK(format(2.7755575615628914e-17) == "2.77556e-17");
     CHECK(format(Vector3{1.0 / 3.0, 0, -2}) == "(0.333333, 0, -2)");
+    CHECK(format(Vector3{-0.4330127018922193, 0, 2.7755575615628914e-17}) == "(-0.433013, 0, 0)");
+    CHECK(format(Vector3{0, 0, 2.7755575615628914e-17}) == "(0, 0, 2.77556e-17)");
 }
 
 TEST_CASE("expected and actual print with the fewest digits that tell them apart, at least 6", "[feedback]") {

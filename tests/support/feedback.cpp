@@ -3,6 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -78,7 +79,13 @@ std::string format(double v) {
     return with_digits(v, fewest_digits);
 }
 
-std::string format(const Vector3& v) { return fmt::format("({}, {}, {})", format(v.x), format(v.y), format(v.z)); }
+std::string format(const Vector3& v) {
+    // A component a trillion times smaller than the largest is rounding left by a rotation or a
+    // sum (2.77556e-17 beside 0.433): a case reads it as the 0 it stands for.
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    const auto one = [largest](double c) { return std::abs(c) < 1e-12 * largest ? std::string("0") : format(c); };
+    return fmt::format("({}, {}, {})", one(v.x), one(v.y), one(v.z));
+}
 
 Printed format_apart(double expected, double actual) {
     int digits = fewest_digits;

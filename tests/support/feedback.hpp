@@ -35,7 +35,8 @@ void expect_at_least(const Law& law, double minimum, double actual, double toler
 void expect_finite(const Law& law, const Vector3& value, std::string_view unit, std::string_view situation);
 
 /// A number of a case as a person reads it: 6 significant digits, no trailing zeros
-/// ("0.018", "2.77556e-17", "(1.5, 0, -2)"). The seed replays a random case exactly.
+/// ("0.018", "2.77556e-17", "(1.5, 0, -2)"); a vector's component below 1e-12 of its largest
+/// reads 0. The seed replays a random case exactly.
 std::string format(const Vector3& v);
 std::string format(double v);
 
