@@ -60,16 +60,25 @@ std::string failure_message(const Law& law, std::string_view expected, std::stri
                                    law.statement, indented(situation), expected, unit, actual, unit);
     const bool near = std::isfinite(relative_error) && relative_error > 0.0 && relative_error < near_miss;
     if (near) text += fmt::format("\n  relative error: {:.2g}", relative_error);
-    // A value computed in float is a float when it is returned; a double computation that
-    // misses by as much (a loop stopped early) is not, and gets the law's own hint.
-    if (near && actual_is_float && relative_error >= float_band_low && relative_error < float_band_high) {
-        const int digits = static_cast<int>(std::floor(-std::log10(relative_error)));
+    // A near miss of float's size is float's doing for sure when the value checked is itself a
+    // float (what a function computing in float returns): then the hint says double. A value
+    // derived from one (a momentum m v) or a double computation that stopped early (a loop
+    // with a low cap) misses by as much without being a float: the law's own hint comes first,
+    // and a note says what else so few digits can mean.
+    const bool float_sized = near && relative_error >= float_band_low && relative_error < float_band_high;
+    const int digits = float_sized ? static_cast<int>(std::floor(-std::log10(relative_error))) : 0;
+    if (float_sized && actual_is_float) {
         text += fmt::format(
             "\n  hint:     the values agree to only about {} significant digits, what a float holds: compute in "
             "double throughout (a float variable, a float parameter or a literal such as 0.5f keeps about 7 digits)",
             digits);
     } else {
         text += fmt::format("\n  hint:     {}", law.hint);
+        if (float_sized)
+            text += fmt::format(
+                "\n  note:     about {} significant digits agree, also what a float keeps: if a variable, a parameter "
+                "or a literal such as 0.5f is a float, compute in double",
+                digits);
     }
     return text;
 }

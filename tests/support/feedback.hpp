@@ -61,8 +61,9 @@ double relative_error(const Vector3& expected, const Vector3& actual);
 /// The text of a failed check as the student reads it: law, case, expected and actual values,
 /// the relative error of a near miss (below 1 %) and a hint. A near miss in float's precision
 /// band (about 6 to 10 matching digits) whose actual value is exactly a float gets a hint about
-/// double instead of the law's own hint; any other miss gets the law's hint. A case of several
-/// lines is indented under its label.
+/// double instead of the law's own hint; any other miss gets the law's hint, and a near miss of
+/// float's size that is not a float value a note that float is one possible cause. A case of
+/// several lines is indented under its label.
 std::string failure_message(const Law& law, std::string_view expected, std::string_view actual, std::string_view unit,
                             std::string_view situation, double relative_error, bool actual_is_float = false);
 
