@@ -23,18 +23,12 @@ from tools import catch_xml, wording
 KEEP_FAILURES = 2
 KEEP_FAILURE_CHARS = 1500
 KEEP_PRINTED_CHARS = 1000
-# Characters Catch2's test-spec parser treats specially; a backslash makes them literal.
-SPEC_SPECIAL = set('\\,[]"*~^&#')
 
 
 @dataclass
 class Outcome:
     passed: bool
     feedback: str = ""
-
-
-def escape_test_name(name):
-    return "".join("\\" + c if c in SPEC_SPECIAL else c for c in name)
 
 
 # The checker itself is trusted and quick; this only bounds a grader bug or a wedged pipe.
@@ -95,7 +89,7 @@ def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
 def _run_checker(chapter, case, report, seed, limits, calls_write, answers_read):
     """Runs the trusted checker on one test case; its standard output carries the calls and
     its standard input the answers. Returns (returncode or None, problem text or None)."""
-    argv = [str(chapter.checker), escape_test_name(case.name), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
+    argv = [str(chapter.checker), catch_xml.case_spec(case.name, case.tags), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
     env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "WORKBOOK_REMOTE_CHANNEL": "stdio"}
     try:
         # restore_signals=False keeps SIGPIPE ignored: a write to a dead student process is an

@@ -11,7 +11,8 @@ The GIF is the same film at 640x360.
 
 With --student the student's bodies (<scene>.student.trajectory.csv) are drawn over the
 reference's, dashed, in another colour, as <scene>.student.mp4 and .gif; with
---no-reference (the student edition) alone.
+--no-reference (the student edition) over the reference's motion shipped in
+chapters/<chapter>/reference-runs/, or alone where none is shipped.
 
     animate.py chapters/inelastic/scenes/head-on-carts.json build/dev/book/figures/inelastic
 """
@@ -24,6 +25,7 @@ import tempfile
 from pathlib import Path
 
 from plots import motion
+from plots import reference_runs
 from plots import strobe
 
 FPS = 25
@@ -130,9 +132,13 @@ def main():
         if not args.no_reference:
             t = args.out / f"{stem}.trajectory.csv"
             runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), False))
+        elif reference_runs.trajectory_path(args.scene).is_file():  # the student edition: the shipped motion
+            t = reference_runs.trajectory_path(args.scene)
+            runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), False))
         if args.student or args.no_reference:
             t = args.out / f"{stem}.student.trajectory.csv"
-            runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), True))
+            # Alone (no reference motion at all) the bodies keep their own colours, as the key lists them.
+            runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), bool(runs)))
         out_stem = args.out / (stem + (".student" if args.student or args.no_reference else ""))
         with tempfile.TemporaryDirectory() as frames:
             factor, count = render(scene, runs, out_stem, Path(frames))

@@ -5,8 +5,11 @@ For every chapters/<chapter>/scenes/*.json this runs the simulator into a CSV an
 figure with two panels, energy over time and momentum over time, as SVG, PDF and PNG beside
 the CSV. The kinetic energy the impact removes is marked with its measured value (the CSV's
 response_energy_change column). With --student the student's simulator is run as well and
-its curves are drawn dashed over the reference's; with --no-reference (the student edition,
-which has no reference solutions) the student's curves are drawn alone. All looks come from plots/style.gp.
+its curves are drawn dashed over the reference's. With --no-reference (the student edition,
+which has no reference solutions) the reference's curves come from the runs shipped in
+chapters/<chapter>/reference-runs/ (plots/reference_runs.py), and the student's are drawn
+dashed over them as in the full edition; a scene without a shipped run shows the student's
+curves alone. All looks come from plots/style.gp.
 
     figures.py inelastic build/dev/book/figures/inelastic --sim build/dev/tools/workbook-sim
     figures.py inelastic OUT --student --student-sim build/dev/tools/workbook-sim-student
@@ -23,6 +26,7 @@ from pathlib import Path
 
 from plots import families
 from plots import figure_render
+from plots import reference_runs
 from plots import spin
 
 PLOTS = Path(__file__).resolve().parent
@@ -310,30 +314,45 @@ def run_sweep(simulator, scene, fractions, out_dir, stem):
 render = figure_render.render
 
 
+def shipped_sweep(scene, fractions):
+    """[(fraction, csv path, data)] of the reference's runs shipped for a swept scene, or []
+    when any is missing."""
+    paths = [reference_runs.run_path(scene, f) for f in fractions]
+    if not all(p.is_file() for p in paths):
+        return []
+    return [(f, p, read_csv(p)) for f, p in zip(fractions, paths)]
+
+
 def draw_sweep(scene, out_dir, stem, reference_sim, student_sim):
     """A scene with a "sweep": one figure of depth against step, one curve per fraction, and
-    one CSV beside it (the step and every run's deepest penetration, m)."""
+    one CSV beside it (the step and every run's deepest penetration, m). Without a reference
+    simulator the reference's runs shipped with the workbook are drawn, when there are any."""
     description = json.loads(scene.read_text())
     fractions, dt = description["sweep"]["fraction"], description["time_step"]
-    runs = []
+    runs, made = [], []
     if reference_sim:
-        runs += [(f, p, d, False, True) for f, p, d in run_sweep(reference_sim, scene, fractions, out_dir, stem)]
+        made += run_sweep(reference_sim, scene, fractions, out_dir, stem)
+        runs += [(f, p, d, False, True) for f, p, d in made]
+    elif student_sim:
+        runs += [(f, p, d, False, True) for f, p, d in shipped_sweep(scene, fractions)]
+    have_reference = bool(runs)
     if student_sim:
-        runs += [(f, p, d, bool(reference_sim), not reference_sim)
-                 for f, p, d in run_sweep(student_sim, scene, fractions, out_dir, stem + ".yours")]
-    title = description["title"] + ("" if reference_sim else " (your code)")
+        mine = run_sweep(student_sim, scene, fractions, out_dir, stem + ".yours")
+        made += mine
+        runs += [(f, p, d, have_reference, not have_reference) for f, p, d in mine]
+    title = description["title"] + ("" if have_reference else " (your code)")
     body = sweep_panel(title, runs, dt)
     try:
         # The horizontal axis counts steps: a time t lies at step t / dt.
         render(body, out_dir, stem, scene.name, x_per_second=1.0 / dt)
         with open(out_dir / (stem + ".csv"), "w", newline="") as f:
             writer = csv.writer(f)
-            writer.writerow(["step"] + [f"penetration_max_beta_{fr:g}" + ("_yours" if dashed or not reference_sim else "")
+            writer.writerow(["step"] + [f"penetration_max_beta_{fr:g}" + ("_yours" if dashed or not have_reference else "")
                                         for fr, _, _, dashed, _ in runs])
             for k in range(len(runs[0][2]["t"])):
                 writer.writerow([k] + [repr(d[DEPTH[0]][k]) for _, _, d, _, _ in runs])
     finally:
-        for _, path, _, _, _ in runs:
+        for _, path, _ in made:  # the runs made here; never the shipped ones
             path.unlink()
 
 
@@ -378,6 +397,8 @@ def draw_families(args, have_reference, scratch):
                 if have_reference:
                     path = Path(scratch, name + ".csv")
                     runs[member] = (path, run_scene(args.sim, scene, path))
+                elif reference_runs.run_path(scene).is_file():  # the student edition: the shipped run
+                    runs[member] = (reference_runs.run_path(scene), read_csv(reference_runs.run_path(scene)))
                 # Other chapters' overlays are the reference's alone.
                 if args.student and member.split("/")[0] == args.chapter:
                     path = Path(scratch, name + ".student.csv")
@@ -432,7 +453,8 @@ def main():
             sys.exit(1 if draw_families(args, have_reference, scratch) else 0)
         for scene in scenes:
             stem = scene.stem + (".student" if args.student else "")
-            what = ("your code over the reference" if have_reference else "your code") if args.student else "reference"
+            overlay = have_reference or reference_runs.shipped(scene)
+            what = ("your code over the reference" if overlay else "your code") if args.student else "reference"
             print(f"figures: {args.chapter}/{scene.name} ({what}) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
             try:
                 description = json.loads(scene.read_text())
@@ -454,6 +476,9 @@ def main():
                 if have_reference:
                     path = Path(scratch, scene.stem + ".csv") if args.student else args.out / (stem + ".csv")
                     reference = (path, run_scene(args.sim, scene, path))
+                elif reference_runs.run_path(scene).is_file():  # the student edition: the shipped run
+                    path = reference_runs.run_path(scene)
+                    reference = (path, read_csv(path))
                 if args.student:
                     path = args.out / (stem + ".csv")
                     student = (path, run_scene(args.student_sim, scene, path))

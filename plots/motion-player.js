@@ -1,4 +1,4 @@
-// The site's motion player (issue 14): every <div class="wb-motion" data-chapter="ID"> becomes
+// The site's motion player: every <div class="wb-motion" data-chapter="ID"> becomes
 // a player of that chapter's scenes: the bodies moving in the same view as the strobe
 // pictures and animations, play / pause, a scrub bar, a speed choice, and below them the
 // chapter's own energy and momentum figure of the scene with a cursor that moves in step.

@@ -15,11 +15,14 @@ function(workbook_strobe_commands chapter kind out_var)
   foreach(scene IN LISTS scenes)
     get_filename_component(name "${scene}" NAME_WE)
     set(stamp "${_stamps}/${chapter}/${name}.strobe.${kind}.stamp")
+    # The reference's motion shipped for the student edition (plots/reference_runs.py), if any.
+    file(GLOB shipped_motion "${PROJECT_SOURCE_DIR}/chapters/${chapter}/reference-runs/${name}.trajectory*.csv")
     add_custom_command(
       OUTPUT "${stamp}"
       COMMAND Python3::Interpreter -m plots.strobe ${chapter} "${out_dir}" --scene "${scene}" ${args}
       COMMAND ${CMAKE_COMMAND} -E touch "${stamp}"
-      DEPENDS "${scene}" "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" ${_motion_common} ${sims}
+      DEPENDS "${scene}" ${shipped_motion} "${CMAKE_CURRENT_SOURCE_DIR}/strobe.py" "${CMAKE_CURRENT_SOURCE_DIR}/reference_runs.py"
+              ${_motion_common} ${sims}
       WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"  # python3 -m plots.<module>: the root of the imports
       COMMENT "Strobe picture: ${chapter}/${name} (${kind}) -> book/figures/${chapter}/"
       VERBATIM)
@@ -102,7 +105,9 @@ else()
   message(STATUS "ffmpeg not found: the animations targets are not available (apt install ffmpeg)")
 endif()
 
-# One scene under every responder the simulator has (plots/comparison/*.json), part of `figures`.
+# One scene under every responder the simulator has (plots/comparison/*.json), part of `figures`
+# and of every chapter's figures-<chapter> (what `./workbook figures` builds), so that the
+# comparison/ folder the README describes is there after any of them; a stamp keeps it to once.
 if(WORKBOOK_HAVE_SOLUTIONS)
   file(GLOB _comparison_scenes CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/comparison/*.json")
   set(_comparison_stamp "${_stamps}/comparison.stamp")
@@ -118,4 +123,7 @@ if(WORKBOOK_HAVE_SOLUTIONS)
     VERBATIM)
   add_custom_target(motion-comparison DEPENDS "${_comparison_stamp}")
   add_dependencies(figures motion-comparison)
+  foreach(chapter IN LISTS WORKBOOK_CHAPTERS)
+    add_dependencies(figures-${chapter} motion-comparison)
+  endforeach()
 endif()

@@ -8,7 +8,9 @@ ground or walls, spheres as circles, boxes with their orientation, and at the fi
 of each touch the contact point, its normal (from body 2 towards body 1) and the size of the
 impulse the responder gave. One metre is as long across as up. The view follows the rule in
 plots/motion.py (choose_view). With --student the student's bodies are drawn over the
-reference's, dashed, in another colour, as <scene>-strobe.student.*.
+reference's, dashed, in another colour, as <scene>-strobe.student.*; with --no-reference (the
+student edition) over the reference's motion shipped in chapters/<chapter>/reference-runs/
+(plots/reference_runs.py), or alone, in the bodies' own colours, where none is shipped.
 
     strobe.py inelastic build/dev/book/figures/inelastic --sim build/dev/tools/workbook-sim
 """
@@ -20,6 +22,7 @@ from pathlib import Path
 
 from plots import motion
 from plots import player_data
+from plots import reference_runs
 
 SNAPSHOTS = 9
 ASPECT = 2.7  # width / height of the data box; the 12:5 canvas less its key and labels
@@ -290,10 +293,15 @@ def main():
                     where = Path(scratch) if args.student else args.out
                     t, c = motion.simulate(args.sim, path, where / f"{path.stem}.trajectory.csv", stride)
                     runs.append((motion.Trajectory(t), motion.read_contacts(c), False))
+                elif reference_runs.trajectory_path(path).is_file():  # the student edition: the shipped motion
+                    t = reference_runs.trajectory_path(path)
+                    runs.append((motion.Trajectory(t), motion.read_contacts(motion.contacts_path(t)), False))
                 if args.student:
                     t, c = motion.simulate(args.student_sim, path, args.out / f"{path.stem}.student.trajectory.csv",
                                            stride)
-                    runs.append((motion.Trajectory(t), motion.read_contacts(c), True))
+                    # Dashed in the student's colour over the reference's; alone (a scene without
+                    # a shipped reference) in the bodies' own colours, as the key lists them.
+                    runs.append((motion.Trajectory(t), motion.read_contacts(c), bool(runs)))
                 view, box = draw(scene, args.out, path.stem + "-strobe" + suffix, runs)
                 # The site's player shows the same view, in a 16:9 box like the animations.
                 player_box = picture_box(scene, [(r[0], r[1]) for r in runs], view, aspect=16 / 9, count=41)

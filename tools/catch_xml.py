@@ -73,8 +73,18 @@ SPEC_SPECIAL = set('\\,[]"*~^&#')
 
 
 def escape_test_name(name):
-    """A test case name as a Catch2 test spec that matches exactly that case."""
+    """A test case name as a Catch2 test-spec text that matches that name and no other."""
     return "".join("\\" + c if c in SPEC_SPECIAL else c for c in name)
+
+
+def case_spec(name, tags):
+    """The Catch2 test spec of exactly one test case: its tags and its name, all required.
+
+    A name alone is not enough: two chapters may hold a test of the same name (chapters 1
+    and 2 both have "an immovable body on either side, and two immovable bodies"), and a
+    spec by name would run both, judging one chapter by the other's code. Catch2 refuses
+    two cases with the same name and the same tags, so name and tags pick one case."""
+    return "".join(f"[{escape_test_name(tag)}]" for tag in tags) + escape_test_name(name)
 
 
 def parse_listing(xml_text):

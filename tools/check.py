@@ -7,9 +7,16 @@ costs that step only: every other step is still run and reported, and the summar
 always printed. The look and the wording are those of the "steps" reporter
 (tests/support/step_reporter.cpp), which a student without Python can still use by hand.
 
+    python3 -m tools.check --build-dir build/student --chapter inelastic --seed 20261122
     python3 -m tools.check --binary build/student/tests/public_steps_student --chapter inelastic --seed 20261122
 
 (from the workbook's folder: the workbook's Python code is one tree of packages, tools/ among them).
+
+With --build-dir it first builds the chapter's own step-test program,
+public_steps_student_<file> (tests/CMakeLists.txt), which holds only that chapter's tests and
+the student's file of that chapter: an unfinished file of another chapter does not stop the
+check, and a compile error is reported with the file and line it is in. With --binary it runs
+a program that is already built (it may hold every chapter; only CHAPTER's cases are run).
 
 Exit status: 0 when every step passes, 1 otherwise, 2 for wrong arguments."""
 import argparse
@@ -91,10 +98,11 @@ def _actual_line(text):
     return next((line for line in text.splitlines() if line.strip().startswith("actual:")), "")
 
 
-def run_case(binary, name, step, seed, time_limit, scratch):
+def run_case(binary, name, tags, seed, time_limit, scratch):
     report = os.path.join(scratch, "report.xml")
     output = os.path.join(scratch, "printed.txt")
-    argv = [binary, catch_xml.escape_test_name(name), "--reporter", "xml", "--out", report, "--rng-seed", str(seed)]
+    # Name and tags (the chapter's among them): another chapter may have a test of this name.
+    argv = [binary, catch_xml.case_spec(name, tags), "--reporter", "xml", "--out", report, "--rng-seed", str(seed)]
     timed_out = False
     with open(output, "wb") as printed_file:
         process = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=printed_file, stderr=subprocess.STDOUT,
@@ -108,7 +116,7 @@ def run_case(binary, name, step, seed, time_limit, scratch):
     report_text = pathlib.Path(report).read_text(errors="replace") if os.path.exists(report) else ""
     printed = pathlib.Path(output).read_bytes()[:SHOWN_PRINTED_CHARS].decode(errors="replace").strip()
     printed = f"\nyour code printed:\n{printed}" if printed else ""
-    return judge(name, step, returncode, timed_out, report_text, printed, time_limit)
+    return judge(name, step_of(tags)[0], returncode, timed_out, report_text, printed, time_limit)
 
 
 def _stop(process):
@@ -138,24 +146,85 @@ def list_cases(binary, chapter):
                            f"{run.stderr.strip()[:SHOWN_PRINTED_CHARS]}") from None
 
 
+# The first error of a compiler's output: GCC and Clang "file:line:col: error: text", MSVC
+# "file(line,col): error C1234: text"; and a linker's missing function.
+_COMPILE_ERROR = re.compile(r"^(?P<file>[A-Za-z]:[^:(\n]+?|[^\s:(][^:(\n]*?)(?::(?P<line>\d+)(?::\d+)?:|\((?P<mline>\d+)(?:,\d+)?\)\s*:)"
+                            r"\s*(?:fatal )?error(?: [A-Z]+\d+)?:\s*(?P<text>.*)$", re.MULTILINE)
+_MISSING_FUNCTION = re.compile(r"undefined reference to [`'](?P<name>[^'`]+)'|unresolved external symbol.*?\((?P<msvc>[^)]*\))\)"
+                               r"|Undefined symbols? .*?\n\s*\"(?P<apple>[^\"]+)\"")
+
+
+def program_name(chapter, solutions):
+    """The chapter's own step-test program (student) or the reference's program of every chapter."""
+    return "public_steps_reference" if solutions else "public_steps_student_" + chapter.replace("-", "_")
+
+
+def find_program(build_dir, name):
+    """The built program in build_dir (tests/, or tests/<config>/ for a multi-config generator)."""
+    for folder in [build_dir / "tests", *sorted((build_dir / "tests").glob("*/"))]:
+        for candidate in (folder / name, folder / (name + ".exe")):
+            if candidate.is_file():
+                return candidate
+    return None
+
+
+def compile_problem(output, chapter, root):
+    """What to tell a student whose chapter does not build: the file and line of the first error."""
+    def shown(path):
+        try:
+            return pathlib.Path(path).resolve().relative_to(root).as_posix()
+        except ValueError:
+            return path
+    first = _COMPILE_ERROR.search(output)
+    if first:
+        where = f"{shown(first['file'].strip())}, line {first['line'] or first['mline']}"
+        return (f"Your code for chapter {chapter} does not compile yet. The first error is in {where}:\n"
+                f"    {first['text'].strip()}\n"
+                f"Fix it (the compiler's full message is above) and run the check again. Only this chapter's "
+                f"file has to compile to check this chapter.")
+    missing = _MISSING_FUNCTION.search(output)
+    if missing:
+        name = next(group for group in missing.groups() if group)
+        return (f"Your code for chapter {chapter} compiles, but a function the tests call is missing: {name}\n"
+                f"Is it still defined in your file, with the same name, parameters and namespace as in the header?")
+    return (f"Chapter {chapter}'s tests could not be built; the build's own messages are above.")
+
+
+def build_program(build_dir, chapter, solutions, root, out):
+    """Builds the chapter's step-test program; returns its path, or None after saying why not."""
+    name = program_name(chapter, solutions)
+    run = subprocess.run(["cmake", "--build", str(build_dir), "--target", name],
+                         capture_output=True, text=True, errors="replace")
+    if run.returncode != 0:
+        out.write(run.stdout + run.stderr)
+        out.write("\n" + compile_problem(run.stdout + run.stderr, chapter, root) + "\n")
+        return None
+    program = find_program(build_dir, name)
+    if program is None:
+        out.write(f"the build made no program {name} in {build_dir}/tests (configure {build_dir} again?)\n")
+    return program
+
+
 def run_chapter(binary, chapter, seed, time_limit, jobs):
     """Every step of the chapter, with the result of each of its test cases."""
     cases = list_cases(binary, chapter)
     steps = {}
     for name, tags in cases:
         number, title = step_of(tags)
-        steps.setdefault(number, Step(number, title)).cases.append(name)
+        steps.setdefault(number, Step(number, title))
     with tempfile.TemporaryDirectory(prefix="workbook-check-") as scratch_root:
         def one(indexed):
             index, (name, tags) = indexed
             scratch = os.path.join(scratch_root, str(index))
             os.mkdir(scratch)
-            return name, run_case(binary, name, step_of(tags)[0], seed, time_limit, scratch)
+            return run_case(binary, name, tags, seed, time_limit, scratch)
 
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-            results = dict(pool.map(one, enumerate(cases)))
+            results = list(pool.map(one, enumerate(cases)))
     for step in steps.values():
-        step.cases = [(name, results[name]) for name in step.cases]
+        step.cases = []
+    for (name, tags), result in zip(cases, results):
+        steps[step_of(tags)[0]].cases.append((name, result))
     return [steps[number] for number in sorted(steps)]
 
 
@@ -186,7 +255,12 @@ def report(steps, out):
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Runs a chapter's step tests, each test case in its own process "
                                                  "with a time limit, and reports them step by step.")
-    parser.add_argument("--binary", required=True, help="the step-test program (Catch2)")
+    program = parser.add_mutually_exclusive_group(required=True)
+    program.add_argument("--binary", help="a step-test program (Catch2) that is already built")
+    program.add_argument("--build-dir", type=pathlib.Path,
+                         help="a configured build folder: build the chapter's own step-test program there first")
+    parser.add_argument("--solutions", action="store_true",
+                        help="with --build-dir: check the reference solutions instead of the student's code")
     parser.add_argument("--chapter", required=True, help="chapter id, as in chapters/CHAPTERS")
     parser.add_argument("--seed", required=True, type=int, help="Catch2 --rng-seed (tests/RANDOM_SEED)")
     parser.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT,
@@ -194,10 +268,20 @@ def main(argv=None):
     parser.add_argument("--jobs", type=int, default=min(4, os.cpu_count() or 1),
                         help="test cases run at once (default: %(default)s)")
     args = parser.parse_args(argv)
-    if not os.path.isfile(args.binary):
-        parser.error(f"no test program at {args.binary}")
     if args.time_limit <= 0:
         parser.error("--time-limit must be positive")
+    if args.solutions and not args.build_dir:
+        parser.error("--solutions goes with --build-dir")
+    if args.build_dir:
+        if not (args.build_dir / "CMakeCache.txt").is_file():
+            parser.error(f"{args.build_dir} is not a configured build folder")
+        root = pathlib.Path(__file__).resolve().parents[1]
+        program = build_program(args.build_dir, args.chapter, args.solutions, root, sys.stdout)
+        if program is None:
+            return 1
+        args.binary = str(program)
+    if not os.path.isfile(args.binary):
+        parser.error(f"no test program at {args.binary}")
 
     try:
         steps = run_chapter(os.path.abspath(args.binary), args.chapter, args.seed, args.time_limit, args.jobs)

@@ -1,4 +1,4 @@
-// The accuracy goals of issue 13, as value assertions, for chapter 3's families. The responder
+// The accuracy goals, as value assertions, for chapter 3's families. The responder
 // is chapter 3's own: the reference linear_impulse::resolve with chapter 2's projection, taken
 // from the response model table by name ("linear-impulse"), so what is checked is what the
 // chapter teaches.
@@ -134,7 +134,8 @@ TEST_CASE("event timing, seeded random pairs: momentum exact to rounding, v_n' =
           "[accuracy][event][random]") {
     testing::SeededRandom random(testing::run_seed());
     for (int trial = 0; trial < 200; ++trial) {
-        const double m1 = random.log_uniform(-3, 3), m2 = random.log_uniform(-3, 3);
+        const double m1 = random.log_uniform(-3, 3);
+        const double m2 = random.log_uniform(-3, 3);
         const double e = random.uniform(0.0, 1.0);
         const Vector3 n = random.direction();
         const double speed = random.log_uniform(-1, 2);

@@ -5,7 +5,12 @@ Against check/misbehaving/ (step 1 returns NaN, step 2 is right, step 3 crashes,
 never returns, step 5 throws) every step must still be reported, each misbehaviour in plain
 words on its own step, the summary printed and the exit status 1. Against the untouched
 skeleton the runner must print exactly what the steps reporter prints (the look students
-know), and against the reference every step passes with exit status 0."""
+know), and against the reference every step passes with exit status 0.
+
+Against a program with the reference of odd chapters and the skeleton of even ones, each
+finished chapter passes whole: a test case is run by its tags and its name, never by a name
+another chapter also uses. A chapter's own program holds that chapter's tests only, and a
+compile error reads as the file and line it is in."""
 import argparse
 import pathlib
 import subprocess
@@ -16,15 +21,16 @@ import unittest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CHECK = [sys.executable, "-m", "tools.check"]  # run from the workbook's folder (cwd=ROOT)
 
+from tools import catch_xml  # noqa: E402
 from tools import check  # noqa: E402
 
 ARGS = None
 TIME_LIMIT = 2.0
 
 
-def run_check(binary, *extra):
+def run_check(binary, *extra, chapter="inelastic"):
     started = time.monotonic()
-    run = subprocess.run([*CHECK, "--binary", binary, "--chapter", "inelastic",
+    run = subprocess.run([*CHECK, "--binary", binary, "--chapter", chapter,
                           "--seed", ARGS.seed, *extra], capture_output=True, text=True, timeout=120, cwd=ROOT)
     return run, time.monotonic() - started
 
@@ -97,6 +103,63 @@ class OrdinaryCode(unittest.TestCase):
         self.assertIn("usage:", run.stderr)
 
 
+class ChaptersApart(unittest.TestCase):
+    def chapters(self):
+        text = (ROOT / "chapters" / "CHAPTERS").read_text()
+        return [line.split("#")[0].strip() for line in text.splitlines() if line.split("#")[0].strip()]
+
+    def test_a_finished_chapter_passes_whole_beside_an_unfinished_one(self):
+        finished = self.chapters()[0::2]  # the mixed program holds the reference of chapters 1, 3, ...
+        shared = "an immovable body on either side, and two immovable bodies"
+        listing = catch_xml.parse_listing(subprocess.run([ARGS.mixed, catch_xml.escape_test_name(shared), "--list-tests", "-r", "xml"],
+                                                         capture_output=True, text=True).stdout)
+        self.assertGreaterEqual(len({tuple(tags) for _, tags in listing}), 2, "the name is no longer shared")
+        for chapter in finished:
+            run, _ = run_check(ARGS.mixed, chapter=chapter)
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertNotIn("FAIL", run.stdout)
+
+    def test_every_case_is_run_alone(self):
+        cases = catch_xml.parse_listing(subprocess.run([ARGS.mixed, "--list-tests", "-r", "xml"],
+                                                       capture_output=True, text=True).stdout)
+        self.assertGreater(len(cases), 20)
+        for name, tags in cases:
+            spec = catch_xml.case_spec(name, tags)
+            picked = catch_xml.parse_listing(subprocess.run([ARGS.mixed, spec, "--list-tests", "-r", "xml"],
+                                                            capture_output=True, text=True).stdout)
+            self.assertEqual(picked, [(name, tags)], spec)
+
+    def test_a_chapter_program_holds_that_chapter_only(self):
+        cases = catch_xml.parse_listing(subprocess.run([ARGS.chapter_program, "--list-tests", "-r", "xml"],
+                                                       capture_output=True, text=True).stdout)
+        self.assertTrue(cases)
+        self.assertTrue(all("projection" in tags for _, tags in cases), cases)
+
+
+class CompileErrors(unittest.TestCase):
+    """The first error of a build, as a student reads it: file and line."""
+
+    def problem(self, output):
+        return check.compile_problem(output, "projection", pathlib.Path("/home/s/workbook"))
+
+    def test_gcc_and_clang(self):
+        output = ("FAILED: chapters/x.o\n/usr/bin/g++ -I/home/s/workbook/chapters -c /home/s/workbook/skeleton/projection.cpp\n"
+                  "/home/s/workbook/skeleton/projection.cpp:42:17: error: 'depth' was not declared in this scope\n")
+        text = self.problem(output)
+        self.assertIn("in skeleton/projection.cpp, line 42:", text)
+        self.assertIn("'depth' was not declared in this scope", text)
+
+    def test_msvc(self):
+        text = self.problem("C:\\w\\skeleton\\projection.cpp(12,5): error C2065: 'x': undeclared identifier\n")
+        self.assertIn("projection.cpp, line 12:", text)
+        self.assertIn("'x': undeclared identifier", text)
+
+    def test_a_missing_function(self):
+        text = self.problem("/usr/bin/ld: a.o: in function `f':\na.cpp:(.text+0x1): "
+                            "undefined reference to `workbook::projection::correct(double)'\n")
+        self.assertIn("a function the tests call is missing: workbook::projection::correct(double)", text)
+
+
 class Judging(unittest.TestCase):
     """How a process's end reads, without building anything."""
 
@@ -119,6 +182,8 @@ def main():
     global ARGS
     parser = argparse.ArgumentParser()
     parser.add_argument("--misbehaving", required=True)
+    parser.add_argument("--mixed", required=True, help="reference of chapters 1, 3, ...; skeleton of 2, 4, ...")
+    parser.add_argument("--chapter-program", required=True, help="public_steps_student_projection")
     parser.add_argument("--skeleton", required=True)
     parser.add_argument("--reference", required=True)
     parser.add_argument("--seed", required=True)

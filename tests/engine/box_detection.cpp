@@ -148,7 +148,9 @@ void check_points(const Contact& contact, const std::vector<Vector3>& expected, 
 }
 
 Quaternion random_orientation(testing::SeededRandom& random) {
-    return normalized(from_axis_angle(random.direction(), random.uniform(0.0, 2 * pi)));
+    const Vector3 axis = random.direction();  // one draw a statement: the same poses on every compiler
+    const double angle = random.uniform(0.0, 2 * pi);
+    return normalized(from_axis_angle(axis, angle));
 }
 
 const RigidBody ground = make_immovable_plane({0, 1, 0}, {0, 0, 0});
@@ -392,8 +394,10 @@ TEST_CASE("box-box, random poses: points in both boxes, depth = shadow overlap, 
     for (int n = 0; n < cases; ++n) {
         const Vector3 half_a{random.uniform(0.1, 1), random.uniform(0.1, 1), random.uniform(0.1, 1)};
         const Vector3 half_b{random.uniform(0.1, 1), random.uniform(0.1, 1), random.uniform(0.1, 1)};
-        const RigidBody a = make_box(1.0, half_a, random.vector(1.0), random_orientation(random));
-        const RigidBody b = make_box(1.0, half_b, random.vector(1.0), random_orientation(random));
+        const Vector3 at_a = random.vector(1.0);
+        const RigidBody a = make_box(1.0, half_a, at_a, random_orientation(random));
+        const Vector3 at_b = random.vector(1.0);
+        const RigidBody b = make_box(1.0, half_b, at_b, random_orientation(random));
         CAPTURE(n, a.position, a.orientation, half_a, b.position, b.orientation, half_b);
         Contact contact;
         Contact swapped;
@@ -427,8 +431,10 @@ TEST_CASE("box-box, random near-resting poses: face contacts obey the same laws"
     for (int n = 0; n < 500; ++n) {
         const Vector3 half_top{random.uniform(0.1, 0.6), random.uniform(0.1, 0.6), random.uniform(0.1, 0.6)};
         const RigidBody bottom = make_box(1.0, {1.0, 0.5, 1.0}, {0, 0, 0});
-        const Quaternion tilt = normalized(from_axis_angle(random.direction(), random.uniform(0.0, 0.05)) *
-                                           turn({0, 1, 0}, random.uniform(0, 360)));
+        const Vector3 tilt_axis = random.direction();
+        const double tilt_angle = random.uniform(0.0, 0.05);
+        const double heading = random.uniform(0, 360);
+        const Quaternion tilt = normalized(from_axis_angle(tilt_axis, tilt_angle) * turn({0, 1, 0}, heading));
         const RigidBody top = make_box(1.0, half_top,
                                        {random.uniform(-0.8, 0.8), 0.5 + half_top.y - random.uniform(0.001, 0.05),
                                         random.uniform(-0.8, 0.8)},
@@ -452,8 +458,10 @@ TEST_CASE("sphere-box and box-plane, random poses: the same laws", "[detection][
     int plane_contacts = 0;
     for (int n = 0; n < 1000; ++n) {
         const Vector3 half{random.uniform(0.1, 1), random.uniform(0.1, 1), random.uniform(0.1, 1)};
-        const RigidBody box = make_box(1.0, half, random.vector(1.0), random_orientation(random));
-        const RigidBody ball = make_sphere(1.0, random.uniform(0.05, 1), random.vector(1.5));
+        const Vector3 box_at = random.vector(1.0);
+        const RigidBody box = make_box(1.0, half, box_at, random_orientation(random));
+        const double ball_radius = random.uniform(0.05, 1);
+        const RigidBody ball = make_sphere(1.0, ball_radius, random.vector(1.5));
         CAPTURE(n, box.position, box.orientation, half, ball.position, ball.shape.radius);
         Contact contact;
         if (collide_sphere_box(ball, box, contact)) {

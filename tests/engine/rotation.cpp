@@ -115,9 +115,12 @@ TEST_CASE("random boxes and spins: L to rounding, E to 1e-12, unit quaternion", 
     for (int n = 0; n < 50; ++n) {
         // Half extents over a decade and more: up to rods and plates 20 times longer than thick.
         const Vector3 half{random.uniform(0.05, 1), random.uniform(0.05, 1), random.uniform(0.05, 1)};
-        RigidBody box = make_box(random.log_uniform(-1, 1), half, {0, 0, 0},
-                                 normalized(from_axis_angle(random.direction(), random.uniform(0, 2 * pi))));
-        box.angular_velocity = random.direction() * random.uniform(0.1, 20);
+        const double mass = random.log_uniform(-1, 1);  // one draw a statement: the same boxes on every compiler
+        const Vector3 axis = random.direction();
+        const double angle = random.uniform(0, 2 * pi);
+        RigidBody box = make_box(mass, half, {0, 0, 0}, normalized(from_axis_angle(axis, angle)));
+        const Vector3 spin_axis = random.direction();
+        box.angular_velocity = spin_axis * random.uniform(0.1, 20);
         const double dt = 1.0 / 240;
         CAPTURE(n, half, box.orientation, box.angular_velocity);
         const Vector3 l0 = momentum(box);
@@ -257,8 +260,10 @@ TEST_CASE("probes of a turned, spinning box: 1/2 w . I w and R I R^T w, from the
     for (int n = 0; n < 100; ++n) {
         const Vector3 half{random.uniform(0.1, 1), random.uniform(0.1, 1), random.uniform(0.1, 1)};
         const double mass = random.log_uniform(-1, 1);
-        RigidBody box = make_box(mass, half, random.vector(2), normalized(from_axis_angle(random.direction(), random.uniform(0, 6))),
-                                 random.vector(3));
+        const Vector3 at = random.vector(2);
+        const Vector3 axis = random.direction();
+        const double angle = random.uniform(0, 6);
+        RigidBody box = make_box(mass, half, at, normalized(from_axis_angle(axis, angle)), random.vector(3));
         box.angular_velocity = random.vector(5);
         const Vector3 w = body_spin(box);
         const Vector3 moments{mass / 12 * (4 * half.y * half.y + 4 * half.z * half.z),

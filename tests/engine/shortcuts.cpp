@@ -38,8 +38,9 @@ std::vector<RigidBody> scene(std::uint64_t seed) {
             bodies.push_back(make_immovable_sphere(0.2, at));
             continue;
         }
-        RigidBody ball = make_sphere(random.uniform(0.5, 2), random.uniform(0.03, 0.12), at,
-                                     {random.uniform(-2, 2), random.uniform(-2, 2), random.uniform(-2, 2)});
+        const double mass = random.uniform(0.5, 2);  // one draw a statement: the same balls on every compiler
+        const double radius = random.uniform(0.03, 0.12);
+        RigidBody ball = make_sphere(mass, radius, at, {random.uniform(-2, 2), random.uniform(-2, 2), random.uniform(-2, 2)});
         if (i % 3 == 0) ball.angular_velocity = {random.uniform(-9, 9), random.uniform(-9, 9), random.uniform(-9, 9)};
         if (i % 7 == 0) ball.velocity.x = -0.0;  // a negative zero that a zero gravity kick would turn positive
         bodies.push_back(ball);

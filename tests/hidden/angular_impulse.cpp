@@ -51,7 +51,8 @@ struct FlatLanding {
 TEST_CASE("random orientations: I_world^-1 is the inverse of R I R^T", "[angular-impulse][step:1:world-inverse-inertia][points:3]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 40; ++i) {
-        const RigidBody box = random_box(random, random.vector(3.0));
+        const Vector3 box_centre = random.vector(3.0);
+        const RigidBody box = random_box(random, box_centre);
         const Matrix3 product = angular_impulse::world_inverse_inertia(box) * box.inertia_world();
         expect_matrix(laws::world_inertia, Matrix3::identity(), product, 1e-11, describe_body(box) + " (I_world^-1 times R I R^T)");
     }
@@ -73,7 +74,8 @@ TEST_CASE("a box turned 90 degrees about x swaps its y and z moments; a moving p
 TEST_CASE("random bodies and points: v + w x r from the body's own centre", "[angular-impulse][step:2:point-velocity][points:3]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 40; ++i) {
-        const RigidBody body = random_box(random, random.vector(10.0));
+        const Vector3 body_centre = random.vector(10.0);
+        const RigidBody body = random_box(random, body_centre);
         const Vector3 p = body.position + random.vector(2.0);
         const Vector3 expected = body.velocity + cross(body.angular_velocity, p - body.position);
         expect_close(laws::point_velocity, expected, angular_impulse::point_velocity(body, p), rounding_tolerance(20.0, 64), "m/s",
@@ -96,8 +98,11 @@ TEST_CASE("rods at many tilts and restitutions: J = (1 + e) m u / (1 + 3 cos^2 t
     testing::SeededRandom random(testing::run_seed());
     const RigidBody floor = ground();
     for (int i = 0; i < 30; ++i) {
-        const double mass = random.log_uniform(-1, 2), length = random.uniform(0.2, 3.0), theta = random.uniform(0.0, 89.0) * degrees;
-        const double speed = random.uniform(0.1, 10.0), e = random.uniform(0.0, 1.0);
+        const double mass = random.log_uniform(-1, 2);
+        const double length = random.uniform(0.2, 3.0);
+        const double theta = random.uniform(0.0, 89.0) * degrees;
+        const double speed = random.uniform(0.1, 10.0);
+        const double e = random.uniform(0.0, 1.0);
         const RigidBody rod = thin_rod(mass, length, theta, {1, 2, 3}, {0, 0, -speed});
         const double c = std::cos(theta);
         const double expected = (1.0 + e) * mass * speed / (1.0 + 3.0 * c * c);
@@ -126,19 +131,21 @@ TEST_CASE("the ground as body 1, a two-wall pair, and a central hit", "[angular-
     const double u = -2.0;
     const double central = -(1.0 + 0.9) * u / (heavy.inverse_mass + light.inverse_mass);
     expect_close(laws::central, central, angular_impulse::impulse_magnitude(heavy, light, {0, 0, -1.0}, {0, 0, 1}, 0.9),
-                 rounding_tolerance(central), "N s", pair_text(heavy, light) + "; central hit, e = 0.9");
+                 rounding_tolerance(central), "N s", pair_text(heavy, light) + "\ncentral hit, e = 0.9");
 }
 
 TEST_CASE("random off-centre pairs: J against the law of restitution and the free rod", "[angular-impulse][step:3:impulse-size][points:3]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 40; ++i) {
-        RigidBody a = random_box(random, random.vector(1.0));
-        RigidBody b = random_box(random, random.vector(1.0));
+        const Vector3 a_centre = random.vector(1.0);
+        RigidBody a = random_box(random, a_centre);
+        const Vector3 b_centre = random.vector(1.0);
+        RigidBody b = random_box(random, b_centre);
         const Vector3 n = random.direction();
         const Vector3 p = random.vector(1.0);
         const double u = normal_velocity_at(a, b, p, n);
         const double e = random.uniform(0.0, 1.0);
-        const std::string situation = pair_text(a, b) + "; point " + format(p) + " m, n = " + format(n) + ", e = " + format(e);
+        const std::string situation = pair_text(a, b) + "\npoint " + format(p) + " m, n = " + format(n) + ", e = " + format(e);
         const double j = angular_impulse::impulse_magnitude(a, b, p, n, e);
         a.velocity += a.inverse_mass * j * n;
         a.angular_velocity += inverse(a.inertia_world()) * cross(p - a.position, j * n);
@@ -153,12 +160,14 @@ TEST_CASE("random off-centre pairs: J against the law of restitution and the fre
 TEST_CASE("apply_impulse: dv = J / m and dw = I^-1 (r x J) on both bodies, random", "[angular-impulse][step:4:apply-impulse][points:3]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 40; ++i) {
-        RigidBody a = random_box(random, random.vector(3.0));
-        RigidBody b = random_box(random, random.vector(3.0));
+        const Vector3 a_centre = random.vector(3.0);
+        RigidBody a = random_box(random, a_centre);
+        const Vector3 b_centre = random.vector(3.0);
+        RigidBody b = random_box(random, b_centre);
         const RigidBody a0 = a, b0 = b;
         const Vector3 p = random.vector(3.0);
         const Vector3 impulse = random.vector(5.0);
-        const std::string situation = pair_text(a0, b0) + "; impulse " + format(impulse) + " N s at " + format(p) + " m";
+        const std::string situation = pair_text(a0, b0) + "\nimpulse " + format(impulse) + " N s at " + format(p) + " m";
         angular_impulse::apply_impulse(a, b, p, impulse);
         const Vector3 dw1 = inverse(a0.inertia_world()) * cross(p - a0.position, impulse);
         const Vector3 dw2 = -(inverse(b0.inertia_world()) * cross(p - b0.position, impulse));
@@ -193,15 +202,17 @@ TEST_CASE("random single-point contacts: restitution, momentum, angular momentum
     testing::SeededRandom random(testing::run_seed());
     int resolved = 0;
     for (int i = 0; i < 60; ++i) {
-        RigidBody a = random_box(random, random.vector(1.0));
-        RigidBody b = random_box(random, random.vector(1.0));
+        const Vector3 a_centre = random.vector(1.0);
+        RigidBody a = random_box(random, a_centre);
+        const Vector3 b_centre = random.vector(1.0);
+        RigidBody b = random_box(random, b_centre);
         a.restitution = random.uniform(0.0, 1.0);
         b.restitution = i % 3 == 0 ? 1.0 : random.uniform(0.0, 1.0);
         const double e = std::min(a.restitution, b.restitution);
         const Vector3 n = random.direction();
         const Vector3 p = random.vector(1.0);
         const double u = normal_velocity_at(a, b, p, n);
-        const std::string situation = pair_text(a, b) + "; point " + format(p) + " m, n = " + format(n) + ", e = " + format(e) +
+        const std::string situation = pair_text(a, b) + "\npoint " + format(p) + " m, n = " + format(n) + ", e = " + format(e) +
                                       ", u = " + format(u) + " m/s";
         const RigidBody a0 = a, b0 = b;
         const Vector3 p0 = momentum(a, b), l0 = angular_momentum(a, b);
@@ -259,7 +270,9 @@ TEST_CASE("random boxes landing flat, turned about the vertical: straight bounce
     RigidBody floor = ground();
     for (int i = 0; i < 20; ++i) {
         const Vector3 half{random.uniform(0.05, 2.0), random.uniform(0.05, 2.0), random.uniform(0.05, 2.0)};
-        const double mass = random.log_uniform(-1, 2), speed = random.uniform(0.5, 10.0), e = random.uniform(0.0, 1.0);
+        const double mass = random.log_uniform(-1, 2);
+        const double speed = random.uniform(0.5, 10.0);
+        const double e = random.uniform(0.0, 1.0);
         FlatLanding landing(mass, half, random.uniform(0.0, 2.0 * std::numbers::pi), speed, e);
         const std::string situation = describe_body(landing.box) + ", half extents " + format(half) + " m, e = " + format(e) +
                                       ", four corners on the ground";
@@ -292,7 +305,7 @@ TEST_CASE("a box landing flat on a resting box: every point at -e u, momentum ke
     contact.normal = n;
     for (const Vector3 corner : {Vector3{-1, -1, -1}, Vector3{1, -1, -1}, Vector3{1, 1, -1}, Vector3{-1, 1, -1}})
         contact.add_point(top.position + rotate(top_turn, Vector3{corner.x * half.x, corner.y * half.y, corner.z * half.z}), 1e-3);
-    const std::string situation = pair_text(top, bottom) + "; four corners, e = 0.6";
+    const std::string situation = pair_text(top, bottom) + "\nfour corners, e = 0.6";
     const Vector3 p0 = momentum(top, bottom), l0 = angular_momentum(top, bottom);
     const double k0 = kinetic(top) + kinetic(bottom);
     std::array<double, 4> u{};
@@ -311,7 +324,9 @@ TEST_CASE("boxes landing on an edge at many tilts: the closed form", "[angular-i
     RigidBody floor = ground();
     for (int i = 0; i < 20; ++i) {
         const Vector3 half{random.uniform(0.1, 1.0), random.uniform(0.1, 1.0), random.uniform(0.1, 1.0)};
-        const double mass = random.log_uniform(-1, 1), e = random.uniform(0.0, 1.0), speed = random.uniform(0.5, 5.0);
+        const double mass = random.log_uniform(-1, 1);
+        const double e = random.uniform(0.0, 1.0);
+        const double speed = random.uniform(0.5, 5.0);
         const double tilt = random.uniform(5.0, 85.0) * degrees;
         const Quaternion turn = from_axis_angle({1, 0, 0}, tilt);
         const Vector3 r = rotate(turn, Vector3{0, -half.y, -half.z});

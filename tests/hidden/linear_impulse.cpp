@@ -148,7 +148,8 @@ TEST_CASE("random pairs and normals of any length: v12 . n", "[linear-impulse][s
     const std::uint64_t seed = workbook::testing::run_seed() + 30;
     SeededRandom random(seed);
     for (int i = 0; i < random_cases; ++i) {
-        Pair p = random_pair(random, random.uniform(0.0, 1.0) < 0.5);
+        const bool approaching = random.uniform(0.0, 1.0) < 0.5;
+        Pair p = random_pair(random, approaching);
         p.contact.normal = p.contact.normal * random.log_uniform(-3.0, 3.0);
         const Vector3& n = p.contact.normal;
         const double expected = dot(p.body1.velocity - p.body2.velocity, n);

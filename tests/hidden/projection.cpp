@@ -39,8 +39,9 @@ struct Pair {
 Pair random_pair(SeededRandom& random) {
     const double scale = random.log_uniform(-2.0, 2.0);
     const double ratio = random.log_uniform(-9.0, 9.0);
-    Pair p{make_sphere(scale, 0.5, random.vector(100.0), random.vector(20.0)),
-           make_sphere(scale * ratio, 0.5, {}, random.vector(20.0)), {}};
+    const Vector3 position1 = random.vector(100.0);  // one draw a statement: the same pairs on every compiler
+    const Vector3 velocity1 = random.vector(20.0);
+    Pair p{make_sphere(scale, 0.5, position1, velocity1), make_sphere(scale * ratio, 0.5, {}, random.vector(20.0)), {}};
     p.body1.angular_velocity = random.vector(10.0);
     p.body2.angular_velocity = random.vector(10.0);
     p.contact.normal = random.direction();

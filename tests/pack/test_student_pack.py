@@ -69,6 +69,24 @@ class StudentPackTest(unittest.TestCase):
             leaked = significant_lines(path) & secret
             self.assertFalse(leaked, f"{path.relative_to(self.pack)} holds secret lines: {sorted(leaked)[:3]}")
 
+    def test_the_reference_runs_of_every_scene_are_in_the_pack_as_numbers_only(self):
+        # The student's figures draw over them (plots/reference_runs.py); numbers and a header.
+        from plots import reference_runs
+        shipped = 0
+        for scene in reference_runs.scenes():
+            for fraction, _ in reference_runs.runs_of(scene):
+                relative = reference_runs.run_path(scene, fraction).relative_to(ROOT)
+                self.assertTrue((self.pack / relative).is_file(), f"{relative} is not in the pack")
+                header, *rows = (self.pack / relative).read_text().splitlines()
+                self.assertTrue(header.startswith("t,"), relative)
+                for row in rows:
+                    [float(value) for value in row.split(",")]
+                shipped += 1
+            if reference_runs.has_trajectory(scene):  # the strobe pictures and the player draw over it
+                trajectory = reference_runs.trajectory_path(scene).relative_to(ROOT)
+                self.assertTrue((self.pack / trajectory).is_file(), f"{trajectory} is not in the pack")
+        self.assertGreater(shipped, 20)
+
     def test_help_and_readme_speak_only_of_what_the_pack_has(self):
         help_text = subprocess.run(["./workbook", "help"], cwd=self.pack, capture_output=True, text=True).stdout
         readme = (self.pack / "README.md").read_text()

@@ -84,7 +84,8 @@ TEST_CASE("two points of a spinning body keep their distance, and a turning plat
           "[angular-impulse][step:2:point-velocity][points:2]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 20; ++i) {
-        const RigidBody body = random_box(random, random.vector(5.0));
+        const Vector3 body_centre = random.vector(5.0);
+        const RigidBody body = random_box(random, body_centre);
         const Vector3 p = body.position + random.vector(1.0);
         const Vector3 q = body.position + random.vector(1.0);
         const double along = dot(angular_impulse::point_velocity(body, p) - angular_impulse::point_velocity(body, q), p - q);
@@ -116,20 +117,21 @@ TEST_CASE("through the centres (r x n = 0) the impulse is chapter 3's", "[angula
     const double u = dot(velocity_at(ball1, point) - velocity_at(box, point), n);
     const double expected = -(1.0 + e) * u / (ball1.inverse_mass + box.inverse_mass);
     expect_close(laws::central, expected, angular_impulse::impulse_magnitude(ball1, box, point, n, e),
-                 rounding_tolerance(expected), "N s", pair_text(ball1, box) + "; point (0.5, 0, 0) m, n = (-1, 0, 0), e = 0.75");
+                 rounding_tolerance(expected), "N s", pair_text(ball1, box) + "\npoint (0.5, 0, 0) m, n = (-1, 0, 0), e = 0.75");
 }
 
 TEST_CASE("random off-centre hits: J makes the point leave at -e u", "[angular-impulse][step:3:impulse-size][points:2]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 20; ++i) {
         RigidBody a = random_box(random, {0, 0, 0});
-        RigidBody b = random_box(random, random.vector(2.0));
+        const Vector3 b_centre = random.vector(2.0);
+        RigidBody b = random_box(random, b_centre);
         const Vector3 n = random.direction();
         const Vector3 p = (a.position + b.position) / 2.0 + random.vector(0.3);
         const double u = normal_velocity_at(a, b, p, n);
         if (u >= 0.0) continue;
         const double e = random.uniform(0.0, 1.0);
-        const std::string situation = pair_text(a, b) + "; point " + testing::format(p) + " m, n = " + testing::format(n) +
+        const std::string situation = pair_text(a, b) + "\npoint " + testing::format(p) + " m, n = " + testing::format(n) +
                                       ", e = " + testing::format(e);
         const double j = angular_impulse::impulse_magnitude(a, b, p, n, e);
         expect_at_least(laws::push, 0.0, j, 0.0, "N s", situation);
@@ -163,11 +165,13 @@ TEST_CASE("the rod's impulse applied: v and w of the worked example", "[angular-
 TEST_CASE("random impulses between two free boxes keep linear and angular momentum", "[angular-impulse][step:4:apply-impulse][points:2]") {
     testing::SeededRandom random(testing::run_seed());
     for (int i = 0; i < 20; ++i) {
-        RigidBody a = random_box(random, random.vector(3.0));
-        RigidBody b = random_box(random, random.vector(3.0));
+        const Vector3 a_centre = random.vector(3.0);
+        RigidBody a = random_box(random, a_centre);
+        const Vector3 b_centre = random.vector(3.0);
+        RigidBody b = random_box(random, b_centre);
         const Vector3 p = random.vector(3.0);
         const Vector3 impulse = random.vector(5.0);
-        const std::string situation = pair_text(a, b) + "; impulse " + testing::format(impulse) + " N s at " + testing::format(p) + " m";
+        const std::string situation = pair_text(a, b) + "\nimpulse " + testing::format(impulse) + " N s at " + testing::format(p) + " m";
         const Vector3 p_before = momentum(a, b);
         const Vector3 l_before = angular_momentum(a, b);
         const double p_scale = a.mass() * length(a.velocity) + b.mass() * length(b.velocity) + length(impulse);
@@ -201,7 +205,7 @@ TEST_CASE("resolve at e = 1 keeps the kinetic energy; a receding point is left a
     ball.restitution = 1.0;
     const Vector3 point{0.15, -0.36, 0.05};
     const Contact contact = contact_at({0, 1, 0}, point);  // from the ball (body 2) up to the box (body 1)
-    const std::string situation = pair_text(box, ball) + "; point " + testing::format(point) + " m, n = (0, 1, 0), e = 1";
+    const std::string situation = pair_text(box, ball) + "\npoint " + testing::format(point) + " m, n = (0, 1, 0), e = 1";
     const double before = kinetic(box) + kinetic(ball);
     const double u = normal_velocity_at(box, ball, point, {0, 1, 0});
     angular_impulse::resolve(box, ball, contact);
@@ -216,10 +220,42 @@ TEST_CASE("resolve at e = 1 keeps the kinetic energy; a receding point is left a
     const RigidBody copy1 = away1;
     const RigidBody copy2 = away2;
     angular_impulse::resolve(away1, away2, contact);
-    const std::string receding = pair_text(copy1, copy2) + "; the point recedes";
+    const std::string receding = pair_text(copy1, copy2) + "\nthe point recedes";
     expect_close(laws::separating, copy1.velocity, away1.velocity, 0.0, "m/s", receding + " (body 1 velocity)");
     expect_close(laws::separating, copy1.angular_velocity, away1.angular_velocity, 0.0, "rad/s", receding + " (body 1 spin)");
     expect_close(laws::separating, copy2.velocity, away2.velocity, 0.0, "m/s", receding + " (body 2 velocity)");
+}
+
+TEST_CASE("a spinning box: its corner, not its centre, says whether the contact approaches", "[angular-impulse][step:5:one-point][points:2]") {
+    // A 1 m cube resting on the ground touches it along its lower right edge, r = (0.5, 0, -0.5)
+    // from its centre. Spinning at w about y moves that point's height at vz - 0.5 wy.
+    const Vector3 point{0.5, 0, 0};
+    const Contact contact = contact_at({0, 0, 1}, point);
+    RigidBody floor = ground();
+    const auto cube = [](double vz, double wy) {
+        RigidBody box = make_box(2.0, {0.5, 0.5, 0.5}, {0, 0, 0.5}, {}, {0, 0, vz});
+        box.angular_velocity = {0, wy, 0};
+        box.restitution = 0.5;
+        return box;
+    };
+
+    // Centre sinking at 1 m/s, spin lifting the edge at 2 m/s: the point recedes at 1 m/s.
+    RigidBody sinking = cube(-1.0, -4.0);
+    const RigidBody sinking_before = sinking;
+    const std::string receding = "box m = 2 kg, 1 m cube on the ground, centre v = (0, 0, -1) m/s, w = (0, -4, 0) rad/s, "
+                                 "e = 0.5\ncontact point " + testing::format(point) + " m (its edge), moving up at 1 m/s";
+    angular_impulse::resolve(sinking, floor, contact);
+    expect_close(laws::contact_point, sinking_before.velocity, sinking.velocity, 0.0, "m/s", receding + " (velocity after)");
+    expect_close(laws::contact_point, sinking_before.angular_velocity, sinking.angular_velocity, 0.0, "rad/s",
+                 receding + " (angular velocity after)");
+
+    // Centre rising at 1 m/s, spin driving the edge down at 2 m/s: the point approaches at 1 m/s.
+    RigidBody rising = cube(1.0, 4.0);
+    const std::string approaching = "box m = 2 kg, 1 m cube on the ground, centre v = (0, 0, 1) m/s, w = (0, 4, 0) rad/s, "
+                                    "e = 0.5\ncontact point " + testing::format(point) + " m (its edge), moving down at 1 m/s";
+    angular_impulse::resolve(rising, floor, contact);
+    expect_close(laws::contact_point, 0.5, normal_velocity_at(rising, floor, point, {0, 0, 1}), rounding_tolerance(4.0, 64), "m/s",
+                 approaching + " (the point's upward velocity after: -e u = 0.5 m/s)");
 }
 
 TEST_CASE("a 2 x 1 x 1 box falling flat at 4 m/s onto four corners bounces straight, e = 0.5",

@@ -87,16 +87,21 @@ inline std::string describe_body(const RigidBody& b) {
            format(b.orientation.w) + "; " + format(Vector3{b.orientation.x, b.orientation.y, b.orientation.z}) + ")";
 }
 
+/// The two bodies of a case, one a line (the message indents the lines under "case:").
 inline std::string pair_text(const RigidBody& a, const RigidBody& b) {
-    return "body 1: " + describe_body(a) + "; body 2: " + describe_body(b);
+    return "body 1: " + describe_body(a) + "\nbody 2: " + describe_body(b);
 }
 
 /// A movable box with random mass (over two decades), size, orientation, velocity and spin.
 template <typename Random>
 RigidBody random_box(Random& random, const Vector3& centre) {
     const Vector3 half{random.uniform(0.1, 1.0), random.uniform(0.1, 1.0), random.uniform(0.1, 1.0)};
-    RigidBody box = make_box(random.log_uniform(-1, 1), half, centre,
-                             from_axis_angle(random.direction(), random.uniform(0.0, 2.0 * std::numbers::pi)), random.vector(3.0));
+    // One draw a statement: C++ leaves the order of a call's arguments to the compiler, and
+    // every compiler must draw the same box from the same seed.
+    const double mass = random.log_uniform(-1, 1);
+    const Vector3 axis = random.direction();
+    const double angle = random.uniform(0.0, 2.0 * std::numbers::pi);
+    RigidBody box = make_box(mass, half, centre, from_axis_angle(axis, angle), random.vector(3.0));
     box.angular_velocity = random.vector(4.0);
     box.update_world_inertia();
     return box;

@@ -59,6 +59,13 @@ inline const Law energy{
 inline const Law separating{
     "only approaching contacts get an impulse", "when no contact point approaches, u >= 0, nothing changes",
     "compute u at the contact point from the point velocities and return before changing anything when u >= 0"};
+inline const Law contact_point{
+    "the contact point decides, not the centres",
+    "a point that approaches (u < 0) is pushed even while the centres move apart, and a receding point is left "
+    "alone even while the centres approach",
+    "decide \"approaching\" from u at the contact point, (point_velocity(body1, p) - point_velocity(body2, p)) . n "
+    "with the spin's w x r (step 2), not from the centres' velocities v1 - v2: a spinning body's point moves "
+    "otherwise than its centre"};
 inline const Law flat{
     "a box landing flat bounces straight", "v' = -e v, and the box does not start to spin: |w'| <= 1e-9 rad/s",
     "impulses applied corner after corner, each once, make the box spin; resolve the points together: sweep over "
@@ -73,6 +80,7 @@ inline const Law every_point{
 inline const Law edge{
     "a box landing on an edge", "J = (1 + e) u / (1/m + d^2 / I_axis) in total, w = J d / I_axis, d the edge's "
     "horizontal distance from the centre",
-    "the two corners of the edge share one impulse; resolve them together so that both leave at -e u"};
+    "the two corners of the edge share one impulse; resolve them together so that both leave at -e u: sweeps "
+    "repeated until no accumulated impulse changes (no low cap on their number), or one solve for both"};
 
 }  // namespace workbook::angular_impulse_laws

@@ -189,9 +189,11 @@ TEST_CASE("two equal balls 5 cm deep with fraction 0.2 and slop 1 cm move 4 mm e
     RigidBody shallow1 = ball(1.0, {0.498, 0, 0});
     RigidBody shallow2 = ball(1.0, {-0.498, 0, 0});
     const Contact within = overlap(shallow1, shallow2);
+    // The case as it was before the correction: the positions after it are what is checked.
+    const std::string shallow = pair_text(shallow1, shallow2, within) + ", fraction 0.2, slop 0.01 m: within the slop";
     projection::correct(shallow1, shallow2, within, knobs);
-    expect_close(laws::knobs, 0.498, shallow1.position.x, 0.0, "m",
-                 pair_text(shallow1, shallow2, within) + ", within the 0.01 m slop (body 1's x after)");
+    expect_close(laws::knobs, 0.498, shallow1.position.x, 0.0, "m", shallow + " (body 1's x after, unmoved)");
+    expect_close(laws::knobs, -0.498, shallow2.position.x, 0.0, "m", shallow + " (body 2's x after, unmoved)");
 }
 
 TEST_CASE("repeated passes leave s + (d0 - s)(1 - beta)^k of the depth", "[projection][step:4:fraction-and-slop][points:2]") {

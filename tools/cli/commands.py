@@ -197,23 +197,19 @@ def run_check(args, raw):
     solutions = args.solutions
     if solutions and not full():
         raise Refusal("this edition has no solutions/ (the reference solutions are the instructor's)")
-    binary, who = ("public_steps_reference", "the reference solutions") if solutions else \
-                  ("public_steps_student", "your code in skeleton/")
+    who = "the reference solutions" if solutions else "your code in skeleton/"
     limit = check_time_limit()
-    try:
-        building.build("student", binary)
-    except Failure as failure:
-        if failure.args[0]:
-            raise
-        print(f"\nYour code does not compile yet. Fix the first error above (it names the file and line),\n"
-              f"then run {PROG} check {args.chapter} again.", file=sys.stderr)
-        return 1
+    prerequisites.setup_tools()
+    building.configure("student")
     say(f"Chapter {number} \u00b7 {args.chapter}: checking {who} (random seed {edition.seed()})")
-    # Each test case in its own process with a time limit (tools/check.py): a crash or an endless
-    # loop costs its own step only, and every step and the summary are still reported.
+    # check.py builds the chapter's own step-test program (only this chapter's file has to
+    # compile; a compile error is told with its file and line), then runs each test case in its
+    # own process with a time limit: a crash or an endless loop costs its own step only, and
+    # every step and the summary are still reported.
     from tools import check
-    return check.main(["--binary", str(host.built_program(edition.build_dir("student") / "tests", binary)),
-                       "--chapter", args.chapter, "--seed", edition.seed(), "--time-limit", f"{limit:g}"])
+    argv = ["--build-dir", str(edition.build_dir("student")), "--chapter", args.chapter,
+            "--seed", edition.seed(), "--time-limit", f"{limit:g}"]
+    return check.main(argv + (["--solutions"] if solutions else []))
 
 
 @run_check.arguments
