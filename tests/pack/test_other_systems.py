@@ -24,6 +24,7 @@ and says which packages to install.
 
     test_other_systems.py --linux-steps build/dev/tests/public_steps_student --cache build/dev/other-systems"""
 import argparse
+import difflib
 import filecmp
 import os
 import pathlib
@@ -89,7 +90,8 @@ def sync_tree(source, target):
         if path.is_dir():
             copy.mkdir(parents=True, exist_ok=True)
         elif not copy.is_file() or not filecmp.cmp(path, copy, shallow=False):
-            shutil.copy2(path, copy)
+            shutil.copyfile(path, copy)  # dated now, not as the original: newer than the last build
+            shutil.copymode(path, copy)
     for path in sorted(target.rglob("*"), reverse=True):
         if path.relative_to(target) not in wanted:
             shutil.rmtree(path) if path.is_dir() and not path.is_symlink() else path.unlink()
@@ -187,9 +189,13 @@ class OtherSystems(unittest.TestCase):
         for chapter in self.chapters:
             with self.subTest(system=name, chapter=chapter):
                 status, report = self.step_report(command, chapter, **options)
+                linux_status, linux_report = self.linux[chapter]
                 self.assertIn("Step 1", report)
-                self.assertEqual((status, report), self.linux[chapter],
-                                 f"{name}: chapter {chapter}'s step report differs from Linux's")
+                if report != linux_report:
+                    diff = difflib.unified_diff(linux_report.splitlines(), report.splitlines(), "Linux", name, lineterm="")
+                    self.fail(f"{name}: chapter {chapter}'s step report differs from Linux's:\n" +
+                              "\n".join(line[:400] for line in list(diff)[:40]))
+                self.assertEqual(status, linux_status, f"{name}: chapter {chapter}'s exit status differs from Linux's")
 
     def test_macos_stand_in_clang_with_libcxx_14(self):
         if not shutil.which("clang++") or not LIBCXX_HEADERS.is_file():

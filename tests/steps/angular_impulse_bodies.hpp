@@ -95,8 +95,14 @@ inline std::string pair_text(const RigidBody& a, const RigidBody& b) {
 template <typename Random>
 RigidBody random_box(Random& random, const Vector3& centre) {
     const Vector3 half{random.uniform(0.1, 1.0), random.uniform(0.1, 1.0), random.uniform(0.1, 1.0)};
-    RigidBody box = make_box(random.log_uniform(-1, 1), half, centre,
-                             from_axis_angle(random.direction(), random.uniform(0.0, 2.0 * std::numbers::pi)), random.vector(3.0));
+    // One draw a statement: the order in which a call's arguments are evaluated is up to the
+    // compiler (GCC goes right to left, Clang left to right), and the cases must be the same
+    // on every compiler. This is the order GCC drew them in when they were arguments.
+    const Vector3 velocity = random.vector(3.0);
+    const double angle = random.uniform(0.0, 2.0 * std::numbers::pi);
+    const Vector3 axis = random.direction();
+    const double mass = random.log_uniform(-1, 1);
+    RigidBody box = make_box(mass, half, centre, from_axis_angle(axis, angle), velocity);
     box.angular_velocity = random.vector(4.0);
     box.update_world_inertia();
     return box;
