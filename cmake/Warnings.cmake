@@ -5,11 +5,11 @@
 # in the student presets: a student's build shows every warning and fails on none.)
 include(CheckCXXCompilerFlag)
 if(MSVC)
-  # /EHsc comes with CMake's defaults for MSVC; /utf-8 reads the sources and writes the
-  # strings as UTF-8 (the feedback's "·" and "≈"), for every target, the libraries' too.
+  # For every target, the libraries' too: /utf-8 reads the sources and writes the strings as
+  # UTF-8 (the step report's "·"), /EHsc is standard C++ exceptions (CMake's default too).
   set(_workbook_warning_flags /W4 /permissive-)
   set(_workbook_error_flag /WX)
-  add_compile_options(/utf-8)
+  add_compile_options(/utf-8 /EHsc)
 else()
   set(_workbook_warning_flags -Wall -Wextra -Wpedantic -Wshadow -Wconversion)
   set(_workbook_error_flag -Werror)
