@@ -6,12 +6,13 @@
 #   CLI11           workbook-sim's command line                     optional (see WORKBOOK_SIMULATOR)
 #
 # Each library is first looked for with find_package: Debian's or Homebrew's packages, or
-# vcpkg's (the `windows` presets read vcpkg.json through vcpkg's toolchain). One that is not
+# vcpkg's (the `windows-*` presets read vcpkg.json through vcpkg's toolchain). One that is not
 # found is downloaded and built here with FetchContent, pinned to a release and its SHA-256,
 # unless WORKBOOK_FETCH_MISSING is OFF. FETCHCONTENT_SOURCE_DIR_<NAME> (a folder holding the
 # library's sources, e.g. FETCHCONTENT_SOURCE_DIR_CATCH2) builds it from that folder instead of
 # downloading; CMAKE_DISABLE_FIND_PACKAGE_<Name>=ON skips the search, e.g. for a library built
-# for another C++ standard library than the one installed (tests/portable/ does both).
+# for another C++ standard library than the one installed (tests/pack/test_other_systems.py
+# does both).
 #
 # Python is no library of the build: the front end, the figures and the tests written in
 # Python need it, the step tests do not (tests/CMakeLists.txt and plots/ look for it).
