@@ -41,8 +41,8 @@ constexpr std::array models{
 std::span<const ResponseModel> response_models() { return models; }
 
 const ResponseModel* find_response_model(std::string_view name) {
-    const auto* found = std::ranges::find(models, name, &ResponseModel::name);
-    return found == models.end() ? nullptr : found;
+    const auto found = std::find_if(models.begin(), models.end(), [name](const ResponseModel& m) { return m.name == name; });
+    return found == models.end() ? nullptr : &*found;
 }
 
 }  // namespace workbook

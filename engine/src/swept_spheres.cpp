@@ -132,7 +132,7 @@ void sweep_fast_spheres(World& world) {
                 }
                 const GridProxy& q = set.proxies[j];
                 if (q.plane) {
-                    const PlaneProxy& plane = *std::ranges::lower_bound(set.planes, j, {}, &PlaneProxy::index);
+                    const PlaneProxy& plane = *std::lower_bound(set.planes.begin(), set.planes.end(), j, plane_before);
                     touch.offer(first_touch_plane(end, fast_start, p->radius, plane.point, plane.normal), j);
                     continue;
                 }
@@ -221,9 +221,9 @@ void sweep_fast_spheres(World& world) {
             for (const PlaneProxy& plane : set.planes) scratch.candidates.push_back(plane.index);
             for (const std::uint32_t entry : world.broad_phase_.sweep_partners(i))
                 scratch.candidates.push_back(entry & BroadPhase::partner_index);
-            // (std::unique, not std::ranges::unique: Clang 14 cannot compile the latter with
-            // GCC 12's standard library.)
-            std::ranges::sort(scratch.candidates);
+            // (The iterator algorithms, not std::ranges: Clang 14 cannot compile ranges::unique
+            // with GCC 12's standard library, and libc++ 14 has none of the ranges algorithms.)
+            std::sort(scratch.candidates.begin(), scratch.candidates.end());
             scratch.candidates.erase(std::unique(scratch.candidates.begin(), scratch.candidates.end()),
                                      scratch.candidates.end());
             for (const std::uint32_t j : scratch.candidates) try_body(j);

@@ -210,7 +210,7 @@ void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
     }
     if ((a.sphere && b.plane) || (a.plane && b.sphere)) {
         const GridProxy& sphere = a.sphere ? a : b;
-        const PlaneProxy& plane = *std::ranges::lower_bound(proxies_.planes, a.plane ? i : j, {}, &PlaneProxy::index);
+        const PlaneProxy& plane = *std::lower_bound(proxies_.planes.begin(), proxies_.planes.end(), a.plane ? i : j, plane_before);
         const Vector3 centre{sphere.x, sphere.y, sphere.z};
         if (!sphere_plane_overlap(centre, sphere.radius, plane.point, plane.normal)) return;
         if (!sphere.movable && !plane.movable) return;

@@ -80,7 +80,7 @@ TEST_CASE("Every chapter 4 scene: momentum, restitution at the points and the en
             if (scene.responder != "angular-impulse") continue;  // the counter-example and the free box are checked below
             workbook::World world = workbook::make_world(scene, *workbook::find_response_model(scene.responder));
             const bool closed = scene.settings.gravity == Vector3{} &&
-                                std::ranges::none_of(scene.bodies, [](const RigidBody& b) { return b.is_immovable(); });
+                                std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const RigidBody& b) { return b.is_immovable(); });
             const workbook::Probes start = world.probes();
             const double p_scale = length(start.linear_momentum) + 1.0;
             const double l_scale = length(start.angular_momentum) + 1.0;

@@ -31,7 +31,7 @@ TEST_CASE("the clay-drop caption and description state what the figure shows", "
 
     workbook::World world = workbook::make_world(scene, *workbook::find_response_model(scene.responder));
     const auto samples = workbook::run(world, scene.duration);
-    const auto hit = std::ranges::find_if(samples, [](const auto& s) { return s.response_energy_change != 0.0; });
+    const auto hit = std::find_if(samples.begin(), samples.end(), [](const auto& s) { return s.response_energy_change != 0.0; });
     REQUIRE(hit != samples.begin());
     REQUIRE(hit != samples.end());
 

@@ -34,7 +34,7 @@ std::vector<fs::path> scene_files() {
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(fs::path(WORKBOOK_SOURCE_DIR) / "chapters" / "inelastic" / "scenes"))
         if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::ranges::sort(files);
+    std::sort(files.begin(), files.end());
     return files;
 }
 
@@ -78,7 +78,7 @@ TEST_CASE("Every inelastic scene's CSV keeps momentum and loses 1/2 mu |v1 - v2|
 
             const std::vector<double> response = table.column("response_energy_change");
             const std::vector<double> contacts = table.column("contacts");
-            const auto hit = std::ranges::find_if(response, [](double v) { return v != 0.0; });
+            const auto hit = std::find_if(response.begin(), response.end(), [](double v) { return v != 0.0; });
             INFO("the bodies must meet within the scene's duration");
             REQUIRE(hit != response.end());
             const auto k = static_cast<std::size_t>(hit - response.begin());

@@ -79,7 +79,7 @@ CradleOrders cradle_orders() {
     auto pass = [](World& world, bool reverse) {
         world.detect();
         auto contacts = std::vector<Contact>(world.contacts().begin(), world.contacts().end());
-        if (reverse) std::ranges::reverse(contacts);
+        if (reverse) std::reverse(contacts.begin(), contacts.end());
         for (const Contact& c : contacts) linear_impulse::resolve(world.bodies()[c.body1], world.bodies()[c.body2], c);
     };
     CradleOrders out;

@@ -114,7 +114,7 @@ TEST_CASE("A ball on the ground with projection only sinks |v| dt each step and 
     const double dt = scene.settings.time_step;
     const double g = -scene.settings.gravity.y;
     const auto first = static_cast<std::size_t>(
-        std::ranges::find_if(samples, [](const Probes& p) { return p.contacts > 0; }) - samples.begin());
+        std::find_if(samples.begin(), samples.end(), [](const Probes& p) { return p.contacts > 0; }) - samples.begin());
     REQUIRE(first < samples.size() / 2);
     // From the step after the first contact on the ball starts each step on the surface
     // (fraction 1, no slop), so it sinks exactly by its speed times dt.

@@ -26,7 +26,7 @@ std::vector<fs::path> every_chapter_scene() {
         for (const auto& entry : fs::directory_iterator(scenes))
             if (entry.path().extension() == ".json") files.push_back(entry.path());
     }
-    std::ranges::sort(files);
+    std::sort(files.begin(), files.end());
     return files;
 }
 

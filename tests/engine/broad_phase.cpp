@@ -89,8 +89,8 @@ TEST_CASE("the grid's pairs are sorted, unique, and a superset of the overlappin
     std::vector<BodyPair> pairs;
     broad.find_pairs(bodies, pairs);
     REQUIRE_FALSE(pairs.empty());
-    CHECK(std::ranges::is_sorted(pairs, [](BodyPair a, BodyPair b) { return a.first != b.first ? a.first < b.first : a.second < b.second; }));
-    CHECK(std::ranges::adjacent_find(pairs, [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; }) == pairs.end());
+    CHECK(std::is_sorted(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.first != b.first ? a.first < b.first : a.second < b.second; }));
+    CHECK(std::adjacent_find(pairs.begin(), pairs.end(), [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; }) == pairs.end());
     std::size_t overlapping = 0;
     for (std::uint32_t i = 0; i < bodies.size(); ++i) {
         for (std::uint32_t j = i + 1; j < bodies.size(); ++j) {
@@ -99,7 +99,7 @@ TEST_CASE("the grid's pairs are sorted, unique, and a superset of the overlappin
             const double reach = bodies[i].shape.radius + bodies[j].shape.radius;
             if (length_squared(bodies[i].position - bodies[j].position) >= reach * reach) continue;
             ++overlapping;
-            const bool found = std::ranges::find_if(pairs, [&](BodyPair p) { return p.first == i && p.second == j; }) != pairs.end();
+            const bool found = std::find_if(pairs.begin(), pairs.end(), [&](BodyPair p) { return p.first == i && p.second == j; }) != pairs.end();
             if (!found) {
                 CAPTURE(i, j);
                 FAIL("an overlapping pair is missing");
@@ -318,7 +318,7 @@ TEST_CASE("each fast sphere's swept partners are listed once, wide and large ali
     for (std::uint32_t i = 0; i < bodies.size(); ++i) {
         std::vector<std::uint32_t> partners;
         for (const std::uint32_t entry : broad_phase.sweep_partners(i)) partners.push_back(entry & BroadPhase::partner_index);
-        std::ranges::sort(partners);
+        std::sort(partners.begin(), partners.end());
         CAPTURE(i);
         CHECK(std::adjacent_find(partners.begin(), partners.end()) == partners.end());
         listed += partners.size();

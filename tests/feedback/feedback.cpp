@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "csv_table.hpp"
 #include "feedback.hpp"
 #include "seeded_random.hpp"
 

@@ -2,7 +2,8 @@
 """One warning policy for the student's code (cmake/Warnings.cmake), proved on a configured
 build's compile_commands.json: every compilation of a file in skeleton/ shows warnings and
 never makes them errors, whichever command (check, run, figures, book, test) builds it,
-while the workbook's own code (engine/) keeps warnings as errors. Only the test target that
+while the workbook's own code (engine/) keeps warnings as errors in the dev build, and the
+student presets make no warning an error at all. Only the test target that
 holds the shipped skeleton warning-free (workbook_skeleton_strict) may use -Werror on it.
 
     test_warning_policy.py build/dev/compile_commands.json"""
@@ -49,6 +50,17 @@ class WarningPolicy(unittest.TestCase):
         presets = (ROOT / "CMakePresets.json").read_text()
         self.assertNotIn("STUDENT_WARNINGS_AS_ERRORS", presets)
         self.assertNotIn("-Werror", presets)
+
+    def test_the_student_presets_make_no_warning_fatal_in_anything_they_build(self):
+        """The engine and the tests are built by the student presets too: there, on a compiler
+        the workbook's CI never ran (Apple Clang, MSVC), a new warning must not stop a student."""
+        presets = {p["name"]: p for p in json.loads((ROOT / "CMakePresets.json").read_text())["configurePresets"]}
+        students = [name for name in presets if name.endswith("student")]
+        self.assertIn("student", students)
+        self.assertIn("windows-student", students)
+        for name in students:
+            self.assertEqual(presets[name]["cacheVariables"].get("WORKBOOK_WARNINGS_AS_ERRORS"), "OFF",
+                             f"preset {name} keeps warnings as errors in the engine and tests")
 
 
 if __name__ == "__main__":

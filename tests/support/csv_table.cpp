@@ -3,14 +3,14 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <limits>
+#include <locale>
 #include <sstream>
 
 namespace workbook::testing {
 
 std::vector<double> CsvTable::column(std::string_view name) const {
-    const auto found = std::ranges::find(names, name);
+    const auto found = std::find(names.begin(), names.end(), name);
     REQUIRE(found != names.end());
     const auto index = static_cast<std::size_t>(found - names.begin());
     std::vector<double> values;
@@ -27,9 +27,18 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 }
 
 double parse_csv_number(const std::string& text) {
+    // What std::to_chars writes for the values that are not numbers; a stream reads none of them.
+    if (text == "nan" || text == "-nan") return std::numeric_limits<double>::quiet_NaN();
+    if (text == "inf") return std::numeric_limits<double>::infinity();
+    if (text == "-inf") return -std::numeric_limits<double>::infinity();
+    // A stream in the classic locale, not std::from_chars: libc++ reads a double with
+    // from_chars only from LLVM 20 on (Xcode 26), and every C++ library's stream reads
+    // digits the same, correctly rounded, whatever the student's locale.
+    std::istringstream in(text);
+    in.imbue(std::locale::classic());
     double value = std::numeric_limits<double>::quiet_NaN();
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size()) FAIL("not a number in the CSV: \"" << text << '"');
+    in >> std::noskipws >> value;
+    if (in.fail() || in.peek() != std::char_traits<char>::eof()) FAIL("not a number in the CSV: \"" << text << '"');
     return value;
 }
 

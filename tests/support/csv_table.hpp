@@ -20,8 +20,8 @@ struct CsvTable {
 /// The comma-separated fields of one line; a trailing comma gives a last, empty field.
 std::vector<std::string> split_csv_line(const std::string& line);
 
-/// Parses with from_chars: locale-independent and correctly rounded, so a value written with
-/// max_digits10 digits comes back bit for bit. Anything but a whole number fails the test.
+/// Parses in the classic locale, correctly rounded, so a value written with max_digits10
+/// digits (or by std::to_chars) comes back bit for bit. Anything but a whole number fails the test.
 double parse_csv_number(const std::string& text);
 
 /// Header and rows of `text`; a row that is not all numbers, or has the wrong width, fails the test.

@@ -24,7 +24,7 @@ struct StepResult {
     std::string title;
     std::vector<CaseResult> cases;
     [[nodiscard]] bool passed() const {
-        return std::ranges::all_of(cases, [](const CaseResult& c) { return c.passed; });
+        return std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.passed; });
     }
 };
 
@@ -39,7 +39,7 @@ std::pair<int, std::string> parse_step_tag(const std::string& tag) {
         number = number * 10 + (c - '0');
     }
     std::string title = tag.substr(colon + 1);
-    std::ranges::replace(title, '-', ' ');
+    std::replace(title.begin(), title.end(), '-', ' ');
     return {number, title};
 }
 
@@ -88,7 +88,7 @@ public:
         for (const auto& [number, step] : steps_) {
             const bool ok = step.passed();
             passed_steps += ok ? 1 : 0;
-            const auto cases_passed = std::ranges::count_if(step.cases, [](const CaseResult& c) { return c.passed; });
+            const auto cases_passed = std::count_if(step.cases.begin(), step.cases.end(), [](const CaseResult& c) { return c.passed; });
             m_stream << (ok ? "  PASS  " : "  FAIL  ") << "Step " << step.number << " \xC2\xB7 " << step.title << "  ("
                      << cases_passed << " of " << step.cases.size() << " tests pass)\n";
             if (ok) continue;

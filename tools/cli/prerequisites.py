@@ -19,6 +19,9 @@ from tools.cli.console import Failure, say
 PACKAGES = ["cmake", "ninja-build", "g++", "clang", "libclang-rt-14-dev", "python3", "git", "nlohmann-json3-dev",
             "libcli11-dev", "libfmt-dev", "gnuplot-nox", "fonts-dejavu-core", "ffmpeg", "doxygen", "libjs-mathjax",
             "doxygen-awesome-css", "bubblewrap", "zip", "unzip", "chromium"]
+# The test suite's builds of the student edition for the other systems' libraries: libc++
+# (macOS's) and mingw-w64 run under Wine (Windows). Only the instructor's tree has that test.
+OTHER_SYSTEMS_PACKAGES = ["libc++-14-dev", "libc++abi-14-dev", "g++-mingw-w64-x86-64-posix", "wine64"]
 # Only `./workbook bench` needs these: Google Benchmark and the peer engines it is measured
 # against (Bullet is found through pkg-config). Students never install them.
 BENCH_PACKAGES = ["libbenchmark-dev", "libchipmunk-dev", "libbox2d-dev", "libbullet-dev", "pkgconf"]
@@ -182,6 +185,8 @@ def missing_packages():
             continue
         if not _installed(package):
             missing.append(package)
+    if (edition.ROOT / "tests/pack/test_other_systems.py").is_file():
+        missing += [package for package in OTHER_SYSTEMS_PACKAGES if not _installed(package)]
     version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "catch2"], capture_output=True, text=True)
     if not (version.returncode == 0 and version.stdout.startswith("3.")):
         missing.append("catch2")

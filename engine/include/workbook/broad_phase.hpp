@@ -51,6 +51,10 @@ struct PlaneProxy {
     Vector3 normal;       ///< unit normal in the world frame
 };
 
+/// Orders plane proxies by body index, for std::lower_bound over ProxySet::planes (the
+/// iterator algorithm: libc++ 14, the oldest Xcode's, has no std::ranges algorithms).
+inline bool plane_before(const PlaneProxy& plane, std::uint32_t index) { return plane.index < index; }
+
 /// The body proxies of one step, in body order, and what the broad phase should look for.
 struct ProxySet {
     std::vector<GridProxy> proxies;   ///< every body, in body order
