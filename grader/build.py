@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import os
 import re
 
+import screen
 from sandbox import Limits
 
 COMPILE_LIMITS = Limits(wall_seconds=120, memory_bytes=4 << 30, file_bytes=512 << 20, processes=64,
@@ -35,7 +36,19 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     if refused:
         return Built(None, "was refused", refused)
     limits = limits_for(kit, COMPILE_LIMITS)
-    compile_cmd = [kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-c", source, "-o", obj]
+    # Preprocessed in the sandbox, where no secret exists (or none the sandbox's user may
+    # read); its output is screened and is what gets compiled, so the check sees exactly
+    # what the compiler reads.
+    preprocessed = os.path.join(folder, chapter.id + ".ii")
+    run = sandbox.run([kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-E", source,
+                       "-o", preprocessed], readable=kit.include_dirs, writable=folder, limits=limits)
+    if not run.ok or not os.path.isfile(preprocessed):
+        return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
+    with open(preprocessed, "rb") as file:
+        problems = screen.check_preprocessed(file.read(64 << 20).decode("utf-8", "replace"), source, kit.include_dirs)
+    if problems:
+        return Built(None, "was refused", screen.refusal(chapter.source, problems))
+    compile_cmd = [kit.compiler, *kit.compile_flags, "-x", "c++-cpp-output", "-c", preprocessed, "-o", obj]
     run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits)
     if not run.ok or not os.path.isfile(obj):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
@@ -56,53 +69,11 @@ def limits_for(kit, limits):
     return dataclasses.replace(limits, address_space_limit=False) if kit.sanitize else limits
 
 
-# --- Includes -----------------------------------------------------------------------------
-INCLUDE = re.compile(r"^\s*(?:#|%:|\?\?=)\s*include(?:_next)?\b\s*(.*)$")
-HAS_INCLUDE = re.compile(r"__has_include(?:_next)?\s*\(\s*(.*?)\s*\)")
-LITERAL = re.compile(r'^(?:"([^"]*)"|<([^>]*)>)')
-# Assembler and compiler directives that read a file by name.
-READS_FILES = re.compile(r"\.incbin|\.include\b|#\s*pragma\s+GCC\s+dependency|#\s*embed\b|__has_embed", re.IGNORECASE)
-
-
+# --- Includes and assembler (see screen.py) --------------------------------------------
 def check_source(text, name):
-    """Why the file is refused before compiling, or None. Only the public headers and the
-    submission's own files may be included: never an absolute path or one that leaves the
-    submission, never a path built by a macro, and no directive that pulls a file's bytes in."""
-    spliced = re.sub(r"\\\r?\n", "", text)
-    problems = []
-    for number, line in enumerate(spliced.splitlines(), start=1):
-        match = INCLUDE.match(line)
-        paths = []
-        if match:
-            literal = LITERAL.match(match.group(1).strip())
-            if not literal:
-                problems.append(f"line {number}: an #include whose file name is not written out cannot be checked")
-                continue
-            paths.append(literal.group(1) if literal.group(1) is not None else literal.group(2))
-        for argument in HAS_INCLUDE.findall(line):
-            literal = LITERAL.match(argument)
-            paths.append(literal.group(1) if literal and literal.group(1) is not None else
-                         literal.group(2) if literal else "/")
-        for path in paths:
-            why = _outside(path)
-            if why:
-                problems.append(f"line {number}: {path!r} {why}")
-        if READS_FILES.search(line):
-            problems.append(f"line {number}: reads a file into the program ({READS_FILES.search(line).group(0)}), "
-                            "which the grader does not allow")
-    if not problems:
-        return None
-    return (f"your {name} was not compiled: it may include only the standard library, the workbook's public "
-            "headers and files of your own submission.\n  " + "\n  ".join(problems[:5]))
-
-
-def _outside(path):
-    normal = path.replace("\\", "/")
-    if normal.startswith("/") or re.match(r"^[A-Za-z]:", normal) or normal.startswith("~"):
-        return "is an absolute path"
-    if ".." in normal.split("/"):
-        return "leaves your submission (..)"
-    return None
+    """Why the file is refused from its text alone, before anything runs, or None."""
+    problems = screen.check_text(text)
+    return screen.refusal(name, problems) if problems else None
 
 
 # --- Symbols ------------------------------------------------------------------------------
