@@ -27,8 +27,9 @@ class Built:
     feedback: str | None = None     # the compiler's first errors, or why the file was refused
 
 
-def build_chapter(kit, sandbox, chapter, source, folder):
-    """`source` is the student's file already copied into `folder` (a fresh folder)."""
+def build_chapter(kit, sandbox, chapter, source, folder, group=None):
+    """`source` is the student's file already copied into `folder` (a fresh folder); every
+    command runs in the submission's `group` (see Sandbox.new_group)."""
     obj = os.path.join(folder, chapter.id + ".o")
     binary = os.path.join(folder, chapter.id + "-student")
     with open(source, "rb") as file:
@@ -41,7 +42,7 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     # what the compiler reads.
     preprocessed = os.path.join(folder, chapter.id + ".ii")
     run = sandbox.run([kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-E", source,
-                       "-o", preprocessed], readable=kit.include_dirs, writable=folder, limits=limits)
+                       "-o", preprocessed], readable=kit.include_dirs, writable=folder, limits=limits, group=group)
     if not run.ok or not os.path.isfile(preprocessed):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
     with open(preprocessed, "rb") as file:
@@ -49,17 +50,17 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     if problems:
         return Built(None, "was refused", screen.refusal(chapter.source, problems))
     compile_cmd = [kit.compiler, *kit.compile_flags, "-x", "c++-cpp-output", "-c", preprocessed, "-o", obj]
-    run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits)
+    run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits, group=group)
     if not run.ok or not os.path.isfile(obj):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
-    refused = _check_symbols(sandbox, chapter, obj, folder, limits)
+    refused = _check_symbols(sandbox, chapter, obj, folder, limits, group)
     if refused:
         return Built(None, "was refused", refused)
     link_cmd = [kit.compiler, *kit.link_flags, "-o", binary, obj, *chapter.server_objects, *kit.link_libraries]
-    run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits)
+    run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits, group=group)
     if not run.ok or not os.path.isfile(binary):
         return Built(None, "did not link", _first_errors(run, kit, folder, "linking", chapter.source))
-    os.chmod(binary, 0o755)
+    os.chmod(binary, 0o750)
     return Built(binary)
 
 
@@ -77,12 +78,13 @@ def check_source(text, name):
 
 
 # --- Symbols ------------------------------------------------------------------------------
-def _check_symbols(sandbox, chapter, obj, folder, limits):
+def _check_symbols(sandbox, chapter, obj, folder, limits, group=None):
     """Why the object is refused, or None: it may define (globally) only the functions of the
     chapter's header; helpers must be internal (static or in an anonymous namespace). Weak
     definitions of inline functions and templates are what every file has, except main and
     the allocation functions."""
-    runs = [sandbox.run([NM, "--defined-only", *flags, obj], readable=[folder], writable=folder, limits=limits)
+    runs = [sandbox.run([NM, "--defined-only", *flags, obj], readable=[folder], writable=folder, limits=limits,
+                        group=group)
             for flags in ([], ["-C"])]
     if not all(run.ok for run in runs):
         return "the grader could not list the functions your file defines (nm failed)"
