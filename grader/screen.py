@@ -167,7 +167,7 @@ def check_preprocessed(text, source, allowed_dirs):
         if marker:
             number, name, flags = int(marker.group(1)), _unescape(marker.group(2)), marker.group(3).split()
             if "1" in flags:        # entering an included file
-                including = line[-1] - 1 if stack[-1] == source_real else None
+                including = line[-1] if stack[-1] == source_real else None
                 stack.append(_real(name))
                 line.append(number)
                 if not _allowed(stack[-1], source_real, roots):
