@@ -312,4 +312,8 @@ def _write(folder, result, grader, sandbox, args):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:  # before the batch started: nothing was graded or recorded
+        print("Interrupted before grading started: nothing recorded.", file=sys.stderr)
+        sys.exit(130)
