@@ -447,14 +447,15 @@ class Gradescope:
         for label, files in (("reference", reference), ("skeleton", skeleton), ("crashing", crashing)):
             self.grade(label, files)
         # Every hostile case again, graded by the kit setup.sh built, as root without bubblewrap:
-        # fresh unprivileged uids and the permissions setup.sh set are all that protect.
+        # fresh unprivileged uids and the permissions setup.sh set are all that protect. Two
+        # submissions at a time, so that one can look for the other's files.
         self.hostile = {n: e for n, e in made.expect.items() if n.startswith("hostile-")}
         self.hostile_out = self.root / "hostile-out"
         grade = self.root / "source" / "workbook" / "grader" / "grade.py"
         with subprocess.Popen(
                 [sys.executable, str(grade), "--build-dir", str(self.root / "source" / "workbook" / "build" / "grader"),
                  "--out", str(self.hostile_out), "--time-limit", TIME_LIMIT, "--memory-mb", MEMORY_MB, "--quiet",
-                 "--no-bwrap",
+                 "--no-bwrap", "-j", "2", "--case-jobs", "1",
                  *(str(made.subs / n) for n in self.hostile), str(made.subs / f"{NAMES_ARCHIVE}.zip")],
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True) as grader:
             self.hostile_pid = grader.pid
@@ -563,6 +564,12 @@ class GradescopeTest(unittest.TestCase):
                 results[folder.name] = json.loads((folder / "results.json").read_text())
         check_isolation(self, self.g.hostile_out, results, self.g.hostile_run.stdout, os.getuid() == 0)
         self.assertEqual(processes_left(self.g.hostile_pid), [], "processes outlived the batch")
+        # The hopping daemon moves to a new pid faster than /proc can be listed; its sign of
+        # life is a file it creates again and again.
+        alive = pathlib.Path("/tmp/workbook-hopper-alive")
+        alive.unlink(missing_ok=True)
+        time.sleep(0.5)
+        self.assertFalse(alive.exists(), "the hopping daemon outlived its test case")
         if os.getuid() == 0:  # fresh uids: what they left in the machine's shared folders is removed
             for folder in ("/tmp", "/dev/shm", "/var/tmp"):
                 left = [n for n in os.listdir(folder) if n.startswith(("workbook-tmp-fill-", "workbook-spy"))]
