@@ -360,7 +360,11 @@ def _kill_uid(uid, gid, seconds=5.0):
     way they outrun a listing of /proc. Repeated until none is left alive (zombies, dead
     and waiting for a parent outside the uid, do not count)."""
     deadline = time.monotonic() + seconds
-    while _alive_of(uid) and time.monotonic() < deadline:
+    passes = 0
+    # The first pass is unconditional: a process hopping to new pids may never show in a
+    # listing of /proc at all.
+    while (passes == 0 or _alive_of(uid)) and time.monotonic() < deadline:
+        passes += 1
         pid = os.fork()
         if pid == 0:  # the child makes system calls only, then leaves without any cleanup
             code = 1
