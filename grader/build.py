@@ -45,14 +45,24 @@ def build_chapter(kit, sandbox, chapter, source, folder, group=None):
                        "-o", preprocessed], readable=kit.include_dirs, writable=folder, limits=limits, group=group)
     if not run.ok or not os.path.isfile(preprocessed):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
-    with open(preprocessed, "rb") as file:
-        problems = screen.check_preprocessed(file.read(64 << 20).decode("utf-8", "replace"), source, kit.include_dirs)
+    text = _read_whole(preprocessed)
+    problems = [(None, TOO_LARGE)] if text is None else screen.check_preprocessed(text, source, kit.include_dirs)
     if problems:
         return Built(None, "was refused", screen.refusal(chapter.source, problems))
-    compile_cmd = [kit.compiler, *kit.compile_flags, "-x", "c++-cpp-output", "-c", preprocessed, "-o", obj]
+    # Compiled to assembly first: its text is checked before the assembler reads it.
+    assembly = os.path.join(folder, chapter.id + ".s")
+    compile_cmd = [kit.compiler, *kit.compile_flags, "-x", "c++-cpp-output", "-S", preprocessed, "-o", assembly]
     run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits, group=group)
-    if not run.ok or not os.path.isfile(obj):
+    if not run.ok or not os.path.isfile(assembly):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
+    text = _read_whole(assembly)
+    problems = [(None, TOO_LARGE)] if text is None else screen.check_assembly(text)
+    if problems:
+        return Built(None, "was refused", screen.refusal(chapter.source, problems))
+    run = sandbox.run([kit.compiler, *kit.compile_flags, "-x", "assembler", "-c", assembly, "-o", obj],
+                      readable=kit.include_dirs, writable=folder, limits=limits, group=group)
+    if not run.ok or not os.path.isfile(obj):
+        return Built(None, "did not compile", _first_errors(run, kit, folder, "assembling", chapter.source))
     refused = _check_symbols(sandbox, chapter, obj, folder, limits, group)
     if refused:
         return Built(None, "was refused", refused)
@@ -62,6 +72,18 @@ def build_chapter(kit, sandbox, chapter, source, folder, group=None):
         return Built(None, "did not link", _first_errors(run, kit, folder, "linking", chapter.source))
     os.chmod(binary, 0o750)
     return Built(binary)
+
+
+# A check must read all of what it checks: a hand-written chapter file comes nowhere near.
+CHECKED_BYTES = 64 << 20
+TOO_LARGE = f"the compiler's output is larger than {CHECKED_BYTES >> 20} MiB, more than the grader checks"
+
+
+def _read_whole(path):
+    """The text of `path`, or None when it is larger than CHECKED_BYTES."""
+    with open(path, "rb") as file:
+        data = file.read(CHECKED_BYTES + 1)
+    return None if len(data) > CHECKED_BYTES else data.decode("utf-8", "replace")
 
 
 def limits_for(kit, limits):
@@ -142,7 +164,8 @@ def _first_errors(run, kit, folder, what, source_name):
     if len(lines) > start + MAX_ERROR_LINES:
         shown.append(f"... ({len(lines) - start - MAX_ERROR_LINES} more lines)")
     if run.signal:
-        shown.append(f"(the {'compiler' if what == 'compiling' else 'linker'} was stopped by signal {run.signal})")
+        tool = {"compiling": "compiler", "assembling": "assembler"}.get(what, "linker")
+        shown.append(f"(the {tool} was stopped by signal {run.signal})")
     return "\n".join(shown) or f"{what} failed with status {run.returncode}"
 
 

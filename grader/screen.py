@@ -17,6 +17,9 @@
    public header or a system header under /usr, and the submission's own lines may not hold
    `asm` in any spelling (so no .incbin however its string is assembled). That output is
    what is then compiled, so what was checked is exactly what is built.
+3. `check_assembly` reads the assembly the compiler wrote from it, before it is assembled:
+   no directive that reads a file (GCC copies a section attribute's string into it verbatim,
+   so `section("x\n.incbin \"/etc/passwd\"")` would be one without any `asm`).
 """
 import os
 import re
@@ -191,6 +194,25 @@ def check_preprocessed(text, source, allowed_dirs):
                     break
         line[-1] += 1
     return problems
+
+
+# Assembler directives that read a file (.incbin, .include) and those that could build one
+# out of pieces (macros, repetition). The compiler never writes any of them for C++; they
+# reach its assembly only through a string it copies verbatim, such as GCC's
+# __attribute__((section("...\n.incbin \"/etc/passwd\""))).
+ASSEMBLER_READS = re.compile(r"\.(incbin|include|macro|irpc?|rept|altmacro|purgem)\b", re.IGNORECASE)
+
+
+def check_assembly(text):
+    """[(None, problem)] for the compiler's assembly output: checked as text, strings
+    included, so that no quoting can hide a directive from the check (a string of the
+    program that spells '.incbin' is refused too)."""
+    found = sorted({match.group(0).lower() for match in ASSEMBLER_READS.finditer(text)})
+    if not found:
+        return []
+    return [(None, f"the compiled program would make the assembler read a file or run an assembler macro "
+                   f"({', '.join(found)}): a string in an attribute (section, alias...) or in inline assembler "
+                   "that the compiler copies into its assembly")]
 
 
 def _unescape(name):

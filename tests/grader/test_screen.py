@@ -85,5 +85,20 @@ class PreprocessedTest(unittest.TestCase):
         self.assertEqual(self.check(f'# 1 "{self.SOURCE}"\nconst char* s = "asm";\n'), [])
 
 
+class AssemblyTest(unittest.TestCase):
+    def test_directives_that_read_files(self):
+        injected = '\t.section\t.rodata.a\n.global x\nx:\n.incbin "/etc/passwd"\n.byte 0,"aw"\n'
+        self.assertTrue(screen.check_assembly(injected))
+        for hidden in ('\t.INCLUDE "x.s"\n', "a: .macro m\n", "\t.irpc c, abc\n", "\t.rept 3\n"):
+            with self.subTest(hidden):
+                self.assertTrue(screen.check_assembly(hidden))
+
+    def test_ordinary_assembly_passes(self):
+        ordinary = ('\t.file\t"inelastic.cpp"\n\t.text\n\t.globl\t_ZN1f\n_ZN1f:\n.LFB0:\n\t.cfi_startproc\n'
+                    '\tmovsd\t.LC0(%rip), %xmm0\n\tret\n\t.section\t.rodata.str1.1,"aMS",@progbits,1\n'
+                    '.LC1:\n\t.string\t"#include <x> and .included"\n\t.ident\t"GCC"\n')
+        self.assertEqual(screen.check_assembly(ordinary), [])
+
+
 if __name__ == "__main__":
     unittest.main()
