@@ -81,6 +81,7 @@ class Sandbox:
     warning: str | None = None
     bwrap: str | None = None
     _system_binds: list = field(default_factory=list)
+    sized_tmp: bool = True         # bubblewrap 0.8 or newer: its /tmp and /dev/shm can be sized
 
     @property
     def description(self):
@@ -162,9 +163,8 @@ class Sandbox:
                 "--setenv", "PATH", SAFE_PATH, "--setenv", "LANG", "C.UTF-8", "--setenv", "HOME", "/tmp"]
         args += self._system_binds
         # /tmp and /dev/shm are memory: sized, or a run could fill the machine's RAM there.
-        tmp_size = str(limits.disk_bytes or TMP_BYTES_WITHOUT_DISK_LIMIT)
-        args += ["--proc", "/proc", "--dev", "/dev", "--size", tmp_size, "--tmpfs", "/tmp",
-                 "--size", tmp_size, "--tmpfs", "/dev/shm"]
+        size = ["--size", str(limits.disk_bytes or TMP_BYTES_WITHOUT_DISK_LIMIT)] if self.sized_tmp else []
+        args += ["--proc", "/proc", "--dev", "/dev", *size, "--tmpfs", "/tmp", *size, "--tmpfs", "/dev/shm"]
         for path in readable:
             args += ["--ro-bind", str(path), str(path)]
         if writable:
@@ -500,14 +500,26 @@ def _probe(sandbox):
     return result.ok and result.output.strip() == b"ok"
 
 
+def _bwrap_version(bwrap):
+    try:
+        text = subprocess.run([bwrap, "--version"], capture_output=True, text=True, timeout=10).stdout
+        return tuple(int(part) for part in text.split()[-1].split(".")[:2])
+    except (OSError, ValueError, IndexError, subprocess.TimeoutExpired):
+        return (0, 0)
+
+
 def detect(allow_bwrap=True):
     """The strongest isolation that works on this machine, checked by running a command."""
     root = os.getuid() == 0
     bwrap = shutil.which("bwrap")
     if allow_bwrap and bwrap:
         for fresh in ([True, False] if root else [False]):
-            sandbox = Sandbox("bwrap", fresh, bwrap=bwrap, _system_binds=_system_binds())
+            sized = _bwrap_version(bwrap) >= (0, 8)
+            sandbox = Sandbox("bwrap", fresh, bwrap=bwrap, _system_binds=_system_binds(), sized_tmp=sized)
             if _probe(sandbox):
+                if not sized:
+                    sandbox.warning = ("bubblewrap is older than 0.8, so the sandbox's /tmp and /dev/shm (memory) "
+                                       "cannot be sized: student code can fill the machine's memory there.")
                 if root and not fresh:
                     sandbox.warning = ("bubblewrap works only as root here, so the process limit does not bind: "
                                        "a fork loop is stopped by the time limit only.")
