@@ -247,10 +247,9 @@ def _supervise(command, cwd, limits, run_as, env, stdin_fd=None, pass_fds=(), wa
     result = RunResult()
     start = time.monotonic()
     uid, gid = run_as if run_as else (None, None)
-    if stopping.is_set():
-        result.error = "the grader was interrupted"
-        return result
     try:
+        if stopping.is_set():
+            raise OSError("the grader was interrupted")
         # umask 077: what it writes is its own; new session: a Ctrl-C in the grader's
         # terminal reaches the grader only, which decides what to stop.
         process = subprocess.Popen(command, cwd=cwd, env=env,
