@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import os
 import re
 
+from grader import screen
 from grader.sandbox import Limits
 
 COMPILE_LIMITS = Limits(wall_seconds=120, memory_bytes=4 << 30, file_bytes=512 << 20, processes=64,
@@ -26,8 +27,9 @@ class Built:
     feedback: str | None = None     # the compiler's first errors, or why the file was refused
 
 
-def build_chapter(kit, sandbox, chapter, source, folder):
-    """`source` is the student's file already copied into `folder` (a fresh folder)."""
+def build_chapter(kit, sandbox, chapter, source, folder, group=None):
+    """`source` is the student's file already copied into `folder` (a fresh folder); every
+    command runs in the submission's `group` (see Sandbox.new_group)."""
     obj = os.path.join(folder, chapter.id + ".o")
     binary = os.path.join(folder, chapter.id + "-student")
     with open(source, "rb") as file:
@@ -35,19 +37,53 @@ def build_chapter(kit, sandbox, chapter, source, folder):
     if refused:
         return Built(None, "was refused", refused)
     limits = limits_for(kit, COMPILE_LIMITS)
-    compile_cmd = [kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-c", source, "-o", obj]
-    run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits)
-    if not run.ok or not os.path.isfile(obj):
+    # Preprocessed in the sandbox, where no secret exists (or none the sandbox's user may
+    # read); its output is screened and is what gets compiled, so the check sees exactly
+    # what the compiler reads.
+    preprocessed = os.path.join(folder, chapter.id + ".ii")
+    run = sandbox.run([kit.compiler, *kit.compile_flags, *(f"-I{d}" for d in kit.include_dirs), "-E", source,
+                       "-o", preprocessed], readable=kit.include_dirs, writable=folder, limits=limits, group=group)
+    if not run.ok or not os.path.isfile(preprocessed):
         return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
-    refused = _check_symbols(sandbox, chapter, obj, folder, limits)
+    text = _read_whole(preprocessed)
+    problems = [(None, TOO_LARGE)] if text is None else screen.check_preprocessed(text, source, kit.include_dirs)
+    if problems:
+        return Built(None, "was refused", screen.refusal(chapter.source, problems))
+    # Compiled to assembly first: its text is checked before the assembler reads it.
+    assembly = os.path.join(folder, chapter.id + ".s")
+    compile_cmd = [kit.compiler, *kit.compile_flags, "-x", "c++-cpp-output", "-S", preprocessed, "-o", assembly]
+    run = sandbox.run(compile_cmd, readable=kit.include_dirs, writable=folder, limits=limits, group=group)
+    if not run.ok or not os.path.isfile(assembly):
+        return Built(None, "did not compile", _first_errors(run, kit, folder, "compiling", chapter.source))
+    text = _read_whole(assembly)
+    problems = [(None, TOO_LARGE)] if text is None else screen.check_assembly(text)
+    if problems:
+        return Built(None, "was refused", screen.refusal(chapter.source, problems))
+    run = sandbox.run([kit.compiler, *kit.compile_flags, "-x", "assembler", "-c", assembly, "-o", obj],
+                      readable=kit.include_dirs, writable=folder, limits=limits, group=group)
+    if not run.ok or not os.path.isfile(obj):
+        return Built(None, "did not compile", _first_errors(run, kit, folder, "assembling", chapter.source))
+    refused = _check_symbols(sandbox, chapter, obj, folder, limits, group)
     if refused:
         return Built(None, "was refused", refused)
     link_cmd = [kit.compiler, *kit.link_flags, "-o", binary, obj, *chapter.server_objects, *kit.link_libraries]
-    run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits)
+    run = sandbox.run(link_cmd, readable=[str(kit.files_dir)], writable=folder, limits=limits, group=group)
     if not run.ok or not os.path.isfile(binary):
         return Built(None, "did not link", _first_errors(run, kit, folder, "linking", chapter.source))
-    os.chmod(binary, 0o755)
+    os.chmod(binary, 0o750)
     return Built(binary)
+
+
+# A check must read all of what it checks: a hand-written chapter file comes nowhere near.
+CHECKED_BYTES = 64 << 20
+TOO_LARGE = f"the compiler's output is larger than {CHECKED_BYTES >> 20} MiB, more than the grader checks"
+
+
+def _read_whole(path):
+    """The text of `path`, or None when it is larger than CHECKED_BYTES."""
+    with open(path, "rb") as file:
+        data = file.read(CHECKED_BYTES + 1)
+    return None if len(data) > CHECKED_BYTES else data.decode("utf-8", "replace")
 
 
 def limits_for(kit, limits):
@@ -56,62 +92,21 @@ def limits_for(kit, limits):
     return dataclasses.replace(limits, address_space_limit=False) if kit.sanitize else limits
 
 
-# --- Includes -----------------------------------------------------------------------------
-INCLUDE = re.compile(r"^\s*(?:#|%:|\?\?=)\s*include(?:_next)?\b\s*(.*)$")
-HAS_INCLUDE = re.compile(r"__has_include(?:_next)?\s*\(\s*(.*?)\s*\)")
-LITERAL = re.compile(r'^(?:"([^"]*)"|<([^>]*)>)')
-# Assembler and compiler directives that read a file by name.
-READS_FILES = re.compile(r"\.incbin|\.include\b|#\s*pragma\s+GCC\s+dependency|#\s*embed\b|__has_embed", re.IGNORECASE)
-
-
+# --- Includes and assembler (see screen.py) --------------------------------------------
 def check_source(text, name):
-    """Why the file is refused before compiling, or None. Only the public headers and the
-    submission's own files may be included: never an absolute path or one that leaves the
-    submission, never a path built by a macro, and no directive that pulls a file's bytes in."""
-    spliced = re.sub(r"\\\r?\n", "", text)
-    problems = []
-    for number, line in enumerate(spliced.splitlines(), start=1):
-        match = INCLUDE.match(line)
-        paths = []
-        if match:
-            literal = LITERAL.match(match.group(1).strip())
-            if not literal:
-                problems.append(f"line {number}: an #include whose file name is not written out cannot be checked")
-                continue
-            paths.append(literal.group(1) if literal.group(1) is not None else literal.group(2))
-        for argument in HAS_INCLUDE.findall(line):
-            literal = LITERAL.match(argument)
-            paths.append(literal.group(1) if literal and literal.group(1) is not None else
-                         literal.group(2) if literal else "/")
-        for path in paths:
-            why = _outside(path)
-            if why:
-                problems.append(f"line {number}: {path!r} {why}")
-        if READS_FILES.search(line):
-            problems.append(f"line {number}: reads a file into the program ({READS_FILES.search(line).group(0)}), "
-                            "which the grader does not allow")
-    if not problems:
-        return None
-    return (f"your {name} was not compiled: it may include only the standard library, the workbook's public "
-            "headers and files of your own submission.\n  " + "\n  ".join(problems[:5]))
-
-
-def _outside(path):
-    normal = path.replace("\\", "/")
-    if normal.startswith("/") or re.match(r"^[A-Za-z]:", normal) or normal.startswith("~"):
-        return "is an absolute path"
-    if ".." in normal.split("/"):
-        return "leaves your submission (..)"
-    return None
+    """Why the file is refused from its text alone, before anything runs, or None."""
+    problems = screen.check_text(text)
+    return screen.refusal(name, problems) if problems else None
 
 
 # --- Symbols ------------------------------------------------------------------------------
-def _check_symbols(sandbox, chapter, obj, folder, limits):
+def _check_symbols(sandbox, chapter, obj, folder, limits, group=None):
     """Why the object is refused, or None: it may define (globally) only the functions of the
     chapter's header; helpers must be internal (static or in an anonymous namespace). Weak
     definitions of inline functions and templates are what every file has, except main and
     the allocation functions."""
-    runs = [sandbox.run([NM, "--defined-only", *flags, obj], readable=[folder], writable=folder, limits=limits)
+    runs = [sandbox.run([NM, "--defined-only", *flags, obj], readable=[folder], writable=folder, limits=limits,
+                        group=group)
             for flags in ([], ["-C"])]
     if not all(run.ok for run in runs):
         return "the grader could not list the functions your file defines (nm failed)"
@@ -169,7 +164,8 @@ def _first_errors(run, kit, folder, what, source_name):
     if len(lines) > start + MAX_ERROR_LINES:
         shown.append(f"... ({len(lines) - start - MAX_ERROR_LINES} more lines)")
     if run.signal:
-        shown.append(f"(the {'compiler' if what == 'compiling' else 'linker'} was stopped by signal {run.signal})")
+        tool = {"compiling": "compiler", "assembling": "assembler"}.get(what, "linker")
+        shown.append(f"(the {tool} was stopped by signal {run.signal})")
     return "\n".join(shown) or f"{what} failed with status {run.returncode}"
 
 

@@ -13,6 +13,7 @@ import json
 import os
 import pathlib
 import shutil
+import signal
 import sys
 import tempfile
 import threading
@@ -61,7 +62,10 @@ class Grader:
         self.seed = args.seed if args.seed is not None else kit.default_seed
         self.limits = runner.default_limits(args.time_limit, args.memory_mb)
         self.work_root = tempfile.mkdtemp(prefix="workbook-grade-")
-        os.chmod(self.work_root, 0o755)  # the sandboxed user must reach its own folders
+        # The sandboxed users must reach the kit and their own submission's folder, but not
+        # list the root: each submission's folder is open to that submission's group only.
+        os.chmod(self.work_root, 0o711)
+        self.stopping = threading.Event()   # set on Ctrl-C: nothing graded after it is recorded
         self.kit = kits.snapshot(kit, self.work_root)
         # A chapter's build and runs depend only on the bytes of its one source file (it is
         # built alone in its own folder) and on the kit and seed, which a batch shares. So a
@@ -75,9 +79,10 @@ class Grader:
         started = time.monotonic()
         result = report.SubmissionResult(name, str(path))
         work = tempfile.mkdtemp(prefix=f"{_safe(name)}-", dir=self.work_root)
-        os.chmod(work, 0o711)  # reachable by this submission's runs, not listable by another's
+        group = self.sandbox.new_group()
+        self.sandbox.private_folder(work, group)
         try:
-            self._grade_into(result, path, work)
+            self._grade_into(result, path, work, group)
         except submissions.SubmissionError as error:
             result.error = str(error)
         except Exception as error:  # a grader bug costs this submission only, and is reported
@@ -93,19 +98,20 @@ class Grader:
         result.seconds = time.monotonic() - started
         return result
 
-    def _grade_into(self, result, path, work):
+    def _grade_into(self, result, path, work, group):
         found, notes = submissions.chapter_files(path, [c.source for c in self.kit.chapters])
         result.notes += notes
         for chapter in self.kit.chapters:
             folder = os.path.join(work, chapter.id)
             os.mkdir(folder)
+            self.sandbox.private_folder(folder, group)
             if chapter.source in found:
                 data, where = found[chapter.source]
                 origin = "submitted" if where == chapter.source else f"submitted as {where}"
             else:
                 data, origin = chapter.skeleton.read_bytes(), "missing: graded as the untouched skeleton"
             outcomes, problem, feedback = self._graded_once(chapter, data, lambda: self._build_and_run(
-                chapter, data, folder, work))
+                chapter, data, folder, work, group))
             result.chapters.append(report.ChapterResult(chapter, outcomes, problem, feedback, origin))
 
     def _graded_once(self, chapter, data, grade):
@@ -119,18 +125,22 @@ class Grader:
                 entry["result"] = grade()
             return entry["result"]
 
-    def _build_and_run(self, chapter, data, folder, work):
+    def _build_and_run(self, chapter, data, folder, work, group):
         source = os.path.join(folder, chapter.source)
         pathlib.Path(source).write_bytes(data)
-        os.chmod(source, 0o644)
-        self.sandbox.prepare_writable(folder)
-        built = build.build_chapter(self.kit, self.sandbox, chapter, source, folder)
+        if group is not None:
+            os.chown(source, os.getuid(), group)
+        os.chmod(source, 0o640)
+        built = build.build_chapter(self.kit, self.sandbox, chapter, source, folder, group)
         if built.binary is None:
             return None, built.problem, built.feedback
-        scratch = os.path.join(work, "runs", chapter.id)
-        os.makedirs(scratch, exist_ok=True)
+        runs = os.path.join(work, "runs")
+        scratch = os.path.join(runs, chapter.id)
+        for level in (runs, scratch):
+            os.makedirs(level, exist_ok=True)
+            self.sandbox.private_folder(level, group)
         outcomes = runner.run_chapter(self.kit, self.sandbox, chapter, built.binary, scratch, self.seed,
-                                      self.limits, self.args.case_jobs)
+                                      self.limits, self.args.case_jobs, group)
         return outcomes, None, None
 
     def close(self):
@@ -180,8 +190,20 @@ def expand(paths):
     return found
 
 
+class Interrupted(Exception):
+    """Ctrl-C (or SIGTERM) stopped the batch."""
+
+
+def _interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+
 def main(argv=None):
     args = parse_args(argv if argv is not None else sys.argv[1:])
+    # Everything the grader writes (results, gradebook, work folders) is the grader's only,
+    # unless it opens a folder on purpose (the sandboxed runs' own folders).
+    os.umask(0o077)
+    signal.signal(signal.SIGTERM, _interrupt)
     try:
         args.submissions = expand(args.submissions)
     except submissions.SubmissionError as error:
@@ -197,6 +219,7 @@ def main(argv=None):
     grader = Grader(kit, sandbox, args)
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    out.chmod(0o700)  # results hold hidden tests' feedback: never readable by student code
     print(f"Grading {len(args.submissions)} submission(s): chapters {', '.join(c.id for c in kit.chapters)} "
           f"({report.fmt_points(sum(c.max_score for c in kit.chapters))} points), random seed {grader.seed}, "
           f"time limit {args.time_limit:g} s per test case.", flush=True)
@@ -226,8 +249,12 @@ def main(argv=None):
     def one(path_name):
         nonlocal done
         path, name = path_name
+        if grader.stopping.is_set():
+            return
         result = grader.grade(path, name)
         with lock:
+            if grader.stopping.is_set():
+                return  # some of its commands may have been stopped: graded again with --resume
             _write(out / name, result, grader, sandbox, args)
             rows[name] = report.gradebook_row(result, kit.chapters)
             report.write_json(out / name / "row.json", rows[name])
@@ -237,10 +264,21 @@ def main(argv=None):
             if not args.quiet and len(names) == 1:
                 print(report.summary(result), flush=True)
 
+    pool = ThreadPoolExecutor(max_workers=max(1, args.jobs))
     try:
-        with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-            list(pool.map(one, todo))
+        futures = [pool.submit(one, item) for item in todo]
+        for future in futures:
+            future.result()
+        pool.shutdown()
         report.write_gradebook(gradebook, [rows[n] for n in names if n in rows], kit.chapters)
+    except KeyboardInterrupt:
+        _stop(grader, pool)
+        with lock:
+            report.write_gradebook(gradebook, [rows[n] for n in names if n in rows], kit.chapters)
+            print(f"Interrupted: {done} of {len(names)} submission(s) graded and recorded in {out}; the others "
+                  f"are not. Run the same command with --resume to grade them.", file=sys.stderr, flush=True)
+        grader.close()
+        return 130
     finally:
         grader.close()
     if args.results_json and rows:
@@ -248,6 +286,20 @@ def main(argv=None):
         shutil.copyfile(out / names[0] / "results.json", args.results_json)
     print(f"Gradebook: {gradebook}  (results.json per submission in {out}/<name>/)", flush=True)
     return 0
+
+
+def _stop(grader, pool):
+    """Stops a batch: no new command starts, the running ones are killed, and no submission
+    graded meanwhile is recorded (a case whose process was killed would read as a crash)."""
+    grader.stopping.set()
+    sandboxes.stopping.set()
+    pool.shutdown(wait=False, cancel_futures=True)
+    while True:
+        sandboxes.stop_all()
+        pool.shutdown(wait=False)
+        if not any(t.is_alive() for t in getattr(pool, "_threads", ())):
+            return
+        time.sleep(0.05)
 
 
 def _write(folder, result, grader, sandbox, args):
@@ -262,4 +314,8 @@ def _write(folder, result, grader, sandbox, args):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:  # before the batch started: nothing was graded or recorded
+        print("Interrupted before grading started: nothing recorded.", file=sys.stderr)
+        sys.exit(130)

@@ -191,7 +191,7 @@ def snapshot(kit, root):
         os.chmod(folder, 0o755)
         for name in files:
             os.chmod(os.path.join(folder, name), 0o644)
-    os.chmod(root.parent, 0o755)
+    os.chmod(root.parent, 0o711)  # reachable, not listable: it also holds the submissions' folders
     return replace(kit, files_dir=root, include_dirs=include_dirs, link_libraries=libraries, chapters=chapters)
 
 

@@ -5,6 +5,8 @@ import csv
 import json
 import os
 
+from grader import text as safe
+
 VISIBILITIES = ("hidden", "after_due_date", "after_published", "visible")
 
 
@@ -74,7 +76,7 @@ def results_json(result, seed, sandbox_description, hidden_visibility):
                     "output": _case_output(result, ch, case),
                     "visibility": hidden_visibility if case.hidden else "visible",
                 })
-    return {
+    return safe.plain_json({
         "score": result.score,
         "execution_time": round(result.seconds, 2),
         "output": _overall_output(result, seed, sandbox_description),
@@ -89,7 +91,7 @@ def results_json(result, seed, sandbox_description, hidden_visibility):
                          for ch in result.chapters},
             "error": result.error,
         },
-    }
+    })
 
 
 def _case_output(result, ch, case):
@@ -151,14 +153,14 @@ def summary(result):
                 hidden = " (hidden)" if case.hidden else ""
                 lines.append(f"          {case.name}{hidden}: {first[0] if first else 'failed'}")
     lines += [f"  note: {n}" for n in result.notes]
-    return "\n".join(lines)
+    return safe.plain("\n".join(lines))
 
 
 def progress_line(index, count, result):
     status = f"ERROR {result.error}" if result.error else f"{fmt_points(result.score)}/{fmt_points(result.max_score)}"
     problems = [f"{c.chapter.id} {c.problem}" for c in result.chapters if c.problem]
     tail = f"  ({'; '.join(problems)})" if problems else ""
-    return f"[{index}/{count}] {result.name} {status}{tail}  {result.seconds:.1f} s"
+    return safe.plain(f"[{index}/{count}] {result.name} {status}{tail}  {result.seconds:.1f} s")
 
 
 def step_column(chapter, step):
@@ -198,7 +200,7 @@ def write_gradebook(path, rows, chapters):
         writer = csv.DictWriter(file, fieldnames=gradebook_columns(chapters), extrasaction="ignore")
         writer.writeheader()
         for row in rows:
-            writer.writerow(row)
+            writer.writerow({key: safe.cell(value) for key, value in row.items()})
     os.replace(temporary, path)
 
 

@@ -11,11 +11,13 @@ failure."""
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 import os
+import shutil
 import signal as signals
 import subprocess
 import tempfile
 import threading
 
+from grader import sandbox as sandboxes
 from grader.build import limits_for
 from grader.sandbox import Limits
 from tools import catch_xml, wording
@@ -36,26 +38,40 @@ CHECKER_EXTRA_SECONDS = 30
 MAX_REPORT_BYTES = 8 << 20
 
 
-def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs):
-    """{test case name: Outcome} for every test case of the chapter."""
+def run_chapter(kit, sandbox, chapter, binary, scratch_root, seed, limits, jobs, group=None):
+    """{test case name: Outcome} for every test case of the chapter. Each case's student
+    process runs as its own uid (where the grader is root) in a private, empty folder that
+    is removed after the case."""
     limits = limits_for(kit, limits)
     folder = os.path.dirname(binary)
 
     def one(index_case):
         index, case = index_case
+        if sandboxes.stopping.is_set():  # an interrupted batch records nothing of this chapter
+            return case.name, Outcome(False, "not run: the grader was interrupted")
         scratch = os.path.join(scratch_root, f"{chapter.id}-{index}")
         os.makedirs(scratch)
-        sandbox.prepare_writable(scratch)
         try:
-            return case.name, run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits)
+            return case.name, run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits, group)
         except Exception as error:  # a grader bug must cost this case, not the batch
             return case.name, Outcome(False, f"the grader could not run this test: {error}")
+        finally:
+            shutil.rmtree(scratch, ignore_errors=True)
 
+    cases = list(enumerate(chapter.cases))
+    # Without a private /tmp, cases running side by side could pass data through the shared
+    # folders: the visible cases run first, and every hidden case after they have all ended
+    # (and what they left is removed), so no hidden input can reach a visible case's output.
+    phases = [[c for c in cases if not c[1].hidden], [c for c in cases if c[1].hidden]] if sandbox.shares_tmp \
+        else [cases]
+    outcomes = {}
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-        return dict(pool.map(one, enumerate(chapter.cases)))
+        for phase in phases:
+            outcomes.update(pool.map(one, phase))
+    return outcomes
 
 
-def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
+def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits, group=None):
     calls_read, calls_write = os.pipe()
     answers_read, answers_write = os.pipe()
     # Anonymous pipes cannot be reached by name; the mode lets the student's fresh uid reopen
@@ -65,7 +81,7 @@ def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
 
     def serve():
         student["run"] = sandbox.run([binary, f"/dev/fd/{answers_write}"], readable=[folder], writable=scratch,
-                                     limits=limits, stdin_fd=calls_read, pass_fds=(answers_write,))
+                                     limits=limits, stdin_fd=calls_read, pass_fds=(answers_write,), group=group)
 
     # The grader keeps a reader of the answers until the end, so that the student's process
     # can always open its end, even when the checker is already gone.
@@ -75,7 +91,7 @@ def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
     try:
         with tempfile.TemporaryDirectory(prefix="checker-") as private:  # 0700: the student cannot write the report
             report = os.path.join(private, "report.xml")
-            checker = _run_checker(chapter, case, report, seed, limits, calls_write, answers_read)
+            checker = _run_checker(chapter, case, private, report, seed, limits, calls_write, answers_read)
             verdict = _read_report(report, case.name)
         server.join()
     finally:
@@ -86,16 +102,25 @@ def run_case(sandbox, chapter, binary, folder, case, scratch, seed, limits):
     return Outcome(*judge(checker, verdict, run, limits, printed))
 
 
-def _run_checker(chapter, case, report, seed, limits, calls_write, answers_read):
+def _run_checker(chapter, case, private, report, seed, limits, calls_write, answers_read):
     """Runs the trusted checker on one test case; its standard output carries the calls and
-    its standard input the answers. Returns (returncode or None, problem text or None)."""
-    argv = [str(chapter.checker), catch_xml.case_spec(case.name, case.tags), "-r", "xml", "-o", report, "--rng-seed", str(seed)]
+    its standard input the answers. Returns (returncode or None, problem text or None).
+
+    The case is selected by its tags (the chapter's among them) and its name, and the spec is
+    read from a file in the grader's private folder: a command line can be read by every
+    process on the machine, and a hidden test's name says what it tests."""
+    spec = os.path.join(private, "case")
+    with open(spec, "w", encoding="utf-8") as file:
+        file.write(catch_xml.case_spec(case.name, case.tags) + "\n")
+    argv = [str(chapter.checker), f"[{chapter.id}]", "--input-file", spec, "-r", "xml", "-o", report,
+            "--rng-seed", str(seed)]
     env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "WORKBOOK_REMOTE_CHANNEL": "stdio"}
     try:
         # restore_signals=False keeps SIGPIPE ignored: a write to a dead student process is an
-        # error the stand-in reports, not the checker's death.
+        # error the stand-in reports, not the checker's death. A session of its own: a Ctrl-C
+        # in the grader's terminal must not end a case as if the student's code had failed.
         process = subprocess.Popen(argv, stdin=answers_read, stdout=calls_write, stderr=subprocess.DEVNULL,
-                                   env=env, restore_signals=False, close_fds=True)
+                                   env=env, restore_signals=False, close_fds=True, start_new_session=True)
     except OSError as error:
         return None, f"could not start the checker: {error}"
     finally:
@@ -119,7 +144,8 @@ def judge(checker, case, student, limits, printed):
     if run is None:
         return False, f"the grader could not run this test: {problem or 'the student process did not run'}"
     gone = case is None or any(remote_gone_marker in f for f in case.failures)
-    if not gone and not (run.timed_out or run.flooded or run.disk_full or run.signal is not None or run.error):
+    if not gone and not (run.timed_out or run.flooded or run.disk_full or run.memory_full or run.signal is not None
+                         or run.error):
         if run.returncode not in (0, None):
             gone = True
     if not gone:
@@ -133,6 +159,9 @@ def judge(checker, case, student, limits, printed):
     if run.flooded:
         return False, (f"your code printed more than {limits.output_bytes // 1024} KiB of output, so the test "
                        f"was stopped{printed}")
+    if run.memory_full:
+        return False, (f"your code used more than {limits.memory_bytes >> 20} MiB of memory (all its processes "
+                       f"together), so the test was stopped{printed}")
     if run.disk_full:
         return False, (f"your code wrote more than {limits.disk_bytes >> 20} MiB to disk, so the test was "
                        f"stopped{printed}")
@@ -186,5 +215,11 @@ def _signal_name(number):
         return f"signal {number}"
 
 
+# The student's process needs one process and no thread; bubblewrap adds its own (the
+# namespace's init) to the count. The rest is slack for a sanitizer kit's helper thread.
+STUDENT_PROCESSES = 4
+
+
 def default_limits(time_limit, memory_mb, disk_mb=64):
-    return Limits(wall_seconds=time_limit, memory_bytes=memory_mb << 20, disk_bytes=disk_mb << 20)
+    return Limits(wall_seconds=time_limit, memory_bytes=memory_mb << 20, disk_bytes=disk_mb << 20,
+                  processes=STUDENT_PROCESSES)

@@ -15,6 +15,7 @@ import os
 import pathlib
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tarfile
@@ -39,6 +40,9 @@ GRADE, GRADE_ENV = module("grader.grade")
 PACK, PACK_ENV = module("grader.pack_gradescope")
 BUILD_DIR = ROOT / "build" / "dev"
 TIME_LIMIT = "3"
+# Per test case: small enough that the memory-in-children submission crosses it in well under
+# the time limit, large enough for any honest submission.
+MEMORY_MB = "256"
 FRESH_UID_BASE = 1_600_000_000
 GRADESCOPE_TEST_KEYS = {"name": str, "score": (int, float), "max_score": (int, float), "status": str,
                         "output": str, "visibility": str}
@@ -67,7 +71,8 @@ class Batch:
     def grade(self):
         started = time.monotonic()
         with subprocess.Popen([*GRADE, "--build-dir", str(BUILD_DIR), "--out", str(self.out),
-                               "--time-limit", TIME_LIMIT, "--quiet", *map(str, self.paths)],
+                               "--time-limit", TIME_LIMIT, "--memory-mb", MEMORY_MB, "--quiet",
+                               *map(str, self.paths)],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=GRADE_ENV) as grader:
             # The sandbox derives its fresh uids from the grader's pid; the fork-loop check
             # looks at those alone, so another grader running on the machine cannot fail it.
@@ -121,6 +126,16 @@ class Batch:
             self._add_expected(name, mutant.parent, mutant.parent.parent.name)
         for hostile in sorted((ROOT / "tests" / "hostile").glob("*/expect.json")):
             self._add_expected(f"hostile-{hostile.parent.name}", hostile.parent, None)
+        self._names_archive(self.subs / f"{NAMES_ARCHIVE}.zip")
+        self.paths.append(self.subs / f"{NAMES_ARCHIVE}.zip")
+
+    @staticmethod
+    def _names_archive(path):
+        """A zip whose only chapter file lies in a folder named with terminal escapes (write
+        the clipboard, clear the screen) and a spreadsheet formula, and is too large to grade:
+        the name reaches the notes, the summary and results.json."""
+        with zipfile.ZipFile(path, "w") as archive:
+            archive.writestr(f"{HOSTILE_NAME}/{source_name(chapter_ids()[0])}", "// too large\n" * 90_000)
 
     @staticmethod
     def _archive_bomb(path, size=96 << 20):
@@ -160,6 +175,8 @@ class Batch:
         self.expect[name] = (chapter, expect)
 
 
+NAMES_ARCHIVE = "hostile-names"
+HOSTILE_NAME = '=HYPERLINK("http://example.invalid")\x1b]52;c;aGVsbG8=\x07\x1b[2J\x9b31m\u202e'
 BATCH = None
 GRADESCOPE_THREAD = None
 
@@ -233,18 +250,39 @@ class GraderTest(unittest.TestCase):
         if os.getuid() == 0 and "fresh unprivileged uid" in self.b.results["reference"]["output"]:
             outputs = "\n".join(t["output"] for t in self.b.results["hostile-fork-loop"]["tests"])
             self.assertIn("then fork failed", outputs, "the process limit did not stop the fork loop")
-        first_uid = FRESH_UID_BASE + (self.b.grader_pid % 100_000) * 10_000
-        own_uids = range(first_uid, first_uid + 10_000)
-        left = []
-        for entry in os.listdir("/proc"):
-            try:
-                if entry.isdigit() and os.stat(f"/proc/{entry}").st_uid in own_uids:
-                    state = pathlib.Path(f"/proc/{entry}/stat").read_text().rsplit(")", 1)[1].split()[0]
-                    if state != "Z":
-                        left.append(entry)
-            except (FileNotFoundError, ProcessLookupError, IndexError):
-                continue
-        self.assertEqual(left, [], "sandboxed processes outlived the batch")
+        self.assertEqual(processes_left(self.b.grader_pid), [], "sandboxed processes outlived the batch")
+
+    def test_no_hostile_submission_spies_escapes_or_outgrows_its_case(self):
+        check_isolation(self, self.b.out, self.b.results, self.b.run.stdout,
+                        "fresh unprivileged uid" in self.b.results["reference"]["output"])
+
+    def test_interrupt_records_nothing_half_graded_and_resume_grades_it(self):
+        """Ctrl-C in a terminal sends SIGINT to the whole process group: the batch stops, no
+        submission graded meanwhile is recorded, and --resume grades them all."""
+        out = self.b.tmp / "interrupted"
+        paths = [str(self.b.subs / "reference"), str(self.b.subs / "hostile-segfault")]
+        command = [*GRADE, "--build-dir", str(BUILD_DIR), "--out", str(out), "--time-limit",
+                   TIME_LIMIT, "--quiet", *paths]
+        with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                              start_new_session=True, env=GRADE_ENV) as grader:
+            time.sleep(3)
+            os.killpg(grader.pid, signal.SIGINT)
+            stdout, stderr = grader.communicate(timeout=60)
+        if grader.returncode == 0:
+            self.skipTest("the batch finished before the interrupt")
+        self.assertEqual(grader.returncode, 130, stderr[-2000:])
+        self.assertIn("--resume", stderr)
+        self.assertEqual(processes_left(grader.pid), [])
+        resumed = subprocess.run(command + ["--resume"], capture_output=True, text=True, timeout=300)
+        self.assertEqual(resumed.returncode, 0, resumed.stderr[-2000:])
+        with open(out / "gradebook.csv", newline="") as file:
+            rows = {row["submission"]: row for row in csv.DictReader(file)}
+        self.assertEqual(set(rows), {"reference", "hostile-segfault"})
+        self.assertEqual(rows["reference"]["total"], rows["reference"]["max"])
+        batch_rows = {row["submission"]: row for row in self.b.rows}
+        self.assertEqual(rows["hostile-segfault"]["total"], batch_rows["hostile-segfault"]["total"])
+        for name in rows:
+            self.assertNotIn("SIGINT", (out / name / "results.json").read_text())
 
     def test_planted_results_are_ignored(self):
         # The planted file claims full marks; the hostile case is a chapter-1 submission, so
@@ -415,15 +453,20 @@ class Gradescope:
         for label, files in (("reference", reference), ("skeleton", skeleton), ("crashing", crashing)):
             self.grade(label, files)
         # Every hostile case again, graded by the kit setup.sh built, as root without bubblewrap:
-        # fresh unprivileged uids and the permissions setup.sh set are all that protect.
+        # fresh unprivileged uids and the permissions setup.sh set are all that protect. Two
+        # submissions at a time, so that one can look for the other's files.
         self.hostile = {n: e for n, e in made.expect.items() if n.startswith("hostile-")}
         self.hostile_out = self.root / "hostile-out"
         grade, grade_env = module("grader.grade", self.root / "source" / "workbook")
-        self.hostile_run = subprocess.run(
-            [*grade, "--build-dir", str(self.root / "source" / "workbook" / "build" / "grader"),
-             "--out", str(self.hostile_out), "--time-limit", TIME_LIMIT, "--quiet", "--no-bwrap",
-             *(str(made.subs / n) for n in self.hostile)], capture_output=True, text=True, timeout=600,
-            env=grade_env)
+        with subprocess.Popen(
+                [*grade, "--build-dir", str(self.root / "source" / "workbook" / "build" / "grader"),
+                 "--out", str(self.hostile_out), "--time-limit", TIME_LIMIT, "--memory-mb", MEMORY_MB, "--quiet",
+                 "--no-bwrap", "-j", "2", "--case-jobs", "1",
+                 *(str(made.subs / n) for n in self.hostile), str(made.subs / f"{NAMES_ARCHIVE}.zip")],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=grade_env) as grader:
+            self.hostile_pid = grader.pid
+            stdout, stderr = grader.communicate(timeout=600)
+        self.hostile_run = subprocess.CompletedProcess(grader.args, grader.returncode, stdout, stderr)
 
     @staticmethod
     def _apt_sources():
@@ -519,6 +562,84 @@ class GradescopeTest(unittest.TestCase):
                     self.assertNotIn(str(self.g.root), json.dumps(results))
                     continue
                 check_expectation(self, name, chapter, expect, results, summary)
+
+    def test_hostile_submissions_without_bubblewrap_neither_spy_nor_outlive_their_case(self):
+        results = {}
+        for folder in self.g.hostile_out.iterdir():
+            if (folder / "results.json").is_file():
+                results[folder.name] = json.loads((folder / "results.json").read_text())
+        check_isolation(self, self.g.hostile_out, results, self.g.hostile_run.stdout, os.getuid() == 0)
+        self.assertEqual(processes_left(self.g.hostile_pid), [], "processes outlived the batch")
+        # The hopping daemon moves to a new pid faster than /proc can be listed; its sign of
+        # life is a file it creates again and again.
+        alive = pathlib.Path("/tmp/workbook-hopper-alive")
+        alive.unlink(missing_ok=True)
+        time.sleep(0.5)
+        self.assertFalse(alive.exists(), "the hopping daemon outlived its test case")
+        if os.getuid() == 0:  # fresh uids: what they left in the machine's shared folders is removed
+            for folder in ("/tmp", "/dev/shm", "/var/tmp"):
+                left = [n for n in os.listdir(folder) if n.startswith(("workbook-tmp-fill-", "workbook-spy"))]
+                self.assertEqual(left, [], f"left in {folder}")
+        out_mode = self.g.hostile_out.stat().st_mode & 0o777
+        self.assertEqual(out_mode, 0o700)
+        for path in self.g.hostile_out.rglob("*"):
+            self.assertEqual(path.stat().st_mode & 0o077, 0, f"{path} is readable by other users")
+
+
+def processes_left(grader_pid):
+    """Live processes of the fresh uids a grader with this pid used."""
+    first_uid = FRESH_UID_BASE + (grader_pid % 100_000) * 10_000
+    own_uids = range(first_uid, first_uid + 10_000)
+    left = []
+    for entry in os.listdir("/proc"):
+        try:
+            if entry.isdigit() and os.stat(f"/proc/{entry}").st_uid in own_uids:
+                state = pathlib.Path(f"/proc/{entry}/stat").read_text().rsplit(")", 1)[1].split()[0]
+                if state != "Z":
+                    left.append(entry)
+        except (FileNotFoundError, ProcessLookupError, IndexError):
+            continue
+    return left
+
+
+def failed_outputs(results, visible=None):
+    return [t["output"] for t in results["tests"] if t["status"] == "failed"
+            and (visible is None or (t["visibility"] == "visible") == visible)]
+
+
+def check_isolation(test, out, results, stdout, fresh_uids):
+    """What the hostile submissions that spy, fill /tmp or hold memory in children must
+    not achieve, in either mode; and that names from an archive reach no output raw."""
+    spy = results["hostile-spy-on-cases"]
+    hidden_names = [t["name"].split(" · ")[-1].removesuffix(" (hidden test)") for t in spy["tests"]
+                    if t["name"].endswith("(hidden test)")]
+    visible = "\n".join(failed_outputs(spy, visible=True))
+    test.assertIn("inputs", visible, "the spy did not run")
+    for name in hidden_names:
+        test.assertNotIn(name, visible, "a visible test's output names a hidden test")
+    own_inputs = lambda outputs: set(re.findall(r"my inputs (inputs [^;]*;)", "\n".join(outputs)))
+    hidden_only = own_inputs(failed_outputs(spy, visible=False)) - own_inputs(failed_outputs(spy, visible=True))
+    for inputs in hidden_only:
+        test.assertNotIn(inputs, visible, "a visible test's output holds a hidden test's inputs")
+    fill = "\n".join(failed_outputs(results["hostile-tmp-fill"]))
+    written = [int(n) for n in re.findall(r"wrote (\d+) MiB", fill)]
+    test.assertTrue(written or "MiB to disk" in fill, fill[:500])
+    test.assertLessEqual(max(written, default=0), 128, "/tmp or /dev/shm held more than their size")
+    if fresh_uids:
+        test.assertIn("MiB of memory", "\n".join(failed_outputs(results["hostile-memory-in-children"])))
+    # Names with terminal escapes and formulas: plain text everywhere.
+    names = results[NAMES_ARCHIVE]
+    raw = (out / NAMES_ARCHIVE / "results.json").read_text(encoding="utf-8") + stdout
+    raw += (out / NAMES_ARCHIVE / "summary.txt").read_text(encoding="utf-8")
+    test.assertIn("HYPERLINK", json.dumps(names))
+    for bad in ("\x1b", "\x07", "\x9b", "\u202e", "\\u001b"):
+        test.assertNotIn(bad, raw)
+    with open(out / "gradebook.csv", newline="", encoding="utf-8") as file:
+        for row in csv.DictReader(file):
+            for value in row.values():
+                test.assertFalse(value.startswith(("=", "+", "@")) or value.startswith("-") and not
+                                 re.fullmatch(r"-[\d.]+", value), f"a formula in the gradebook: {value!r}")
+                test.assertNotIn("\x1b", value)
 
 
 def check_expectation(test, name, chapter, expect, results, summary):
