@@ -23,6 +23,7 @@ import argparse
 import concurrent.futures
 import os
 import pathlib
+import re
 import signal
 import subprocess
 import sys

@@ -345,7 +345,7 @@ class OneWording(unittest.TestCase):
         from types import SimpleNamespace
         from grader import runner
         limits = SimpleNamespace(wall_seconds=2.5)
-        ended = dict(timed_out=False, flooded=False, disk_full=False, signal=None, error=None, returncode=None)
+        ended = dict(timed_out=False, flooded=False, disk_full=False, memory_full=False, signal=None, error=None, returncode=None)
         passed, said = runner.judge((1, None), None, SimpleNamespace(**{**ended, "timed_out": True}), limits, "")
         self.assertEqual((passed, said), (False, wording.timed_out(2.5)))
         passed, said = runner.judge((1, None), None, SimpleNamespace(**{**ended, "signal": segv}), limits, "")
