@@ -106,12 +106,13 @@ def _run_checker(chapter, case, private, report, seed, limits, calls_write, answ
     """Runs the trusted checker on one test case; its standard output carries the calls and
     its standard input the answers. Returns (returncode or None, problem text or None).
 
-    The case is selected by its tags (the chapter's among them) and its name, and the spec is
-    read from a file in the grader's private folder: a command line can be read by every
-    process on the machine, and a hidden test's name says what it tests."""
+    The case is selected by the chapter's tag and its name together (two chapters may hold a
+    test of the same name), and the name is read from a file in the grader's private folder: a
+    command line can be read by every process on the machine, and a hidden test's name says
+    what it tests. Catch2 reads each line of that file as one quoted test name."""
     spec = os.path.join(private, "case")
     with open(spec, "w", encoding="utf-8") as file:
-        file.write(catch_xml.case_spec(case.name, case.tags) + "\n")
+        file.write(catch_xml.escape_test_name(case.name) + "\n")
     argv = [str(chapter.checker), f"[{chapter.id}]", "--input-file", spec, "-r", "xml", "-o", report,
             "--rng-seed", str(seed)]
     env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "WORKBOOK_REMOTE_CHANNEL": "stdio"}
