@@ -233,6 +233,10 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
             const std::uint32_t flag = may ? partner_may_touch : 0;
             if (p.fast) sweep_pairs_.push_back({p.index, q.index | flag});
             if (q.fast) sweep_pairs_.push_back({q.index, p.index | flag});
+        } else if (p.fast && !q.sphere) {
+            sweep_pairs_.push_back({p.index, q.index | partner_may_touch});  // a box: the swept test decides
+        } else if (q.fast && !p.sphere) {
+            sweep_pairs_.push_back({q.index, p.index | partner_may_touch});
         }
     };
 

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 #include "workbook/detection.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
+#include "workbook/world.hpp"
 
 namespace workbook {
 
@@ -58,7 +60,8 @@ std::optional<double> sphere_plane(const RigidBody& sphere, const RigidBody& pla
     const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
     const double reach = reach_towards(sphere, normal);
     const double gap = dot(sphere.position - plane.position, normal) - reach;
-    const double rate = dot(sphere.velocity, normal);
+    // A kinematic plane moves at its set velocity (an immovable one has none).
+    const double rate = dot(sphere.velocity - plane.velocity, normal);
     const double curvature = k * dot(gravity, normal);  // gap(t) = gap + rate t + curvature t^2
     const double scale = std::abs(dot(sphere.position - plane.position, normal)) + reach;
     if (std::abs(gap) <= touching_tolerance * scale) {
@@ -137,16 +140,34 @@ std::optional<double> sphere_sphere(const RigidBody& s1, const RigidBody& s2, co
     return std::nullopt;
 }
 
-void advance(std::span<RigidBody> bodies, const Vector3& gravity, double k, double tau) {
+/// Advances one body by tau along the motion of the file comment: a kinematic body at its set
+/// velocity and spin, a movable one under gravity with free rotation (a box whose moments
+/// differ precesses, Euler's equations, which turning it about a fixed w would miss).
+void advance(RigidBody& body, const Vector3& gravity, double k, double tau) {
     if (tau <= 0.0) return;
-    for (RigidBody& body : bodies) {
-        if (body.is_immovable()) continue;
-        body.position += body.velocity * tau + gravity * (k * tau * tau);
-        body.velocity += gravity * tau;
-        // Free rotation as in the discrete step: a box whose moments differ precesses (Euler's
-        // equations), which turning it about a fixed w would miss.
-        if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
+    if (body.is_immovable()) {
+        advance_kinematic(body, tau);
+        return;
     }
+    body.position += body.velocity * tau + gravity * (k * tau * tau);
+    body.velocity += gravity * tau;
+    if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
+}
+
+/// The body as time_of_impact() must see it `s` after the time its state refers to: at its
+/// position then, with the velocity that makes x + v tau + k g tau^2 continue the same curve
+/// (v + 2 k g s; the body's own velocity then is v + g s, equal only for k = 1/2). A body is
+/// advanced in one piece from its state to its next event, so predictions must follow that piece.
+RigidBody seen_after(const RigidBody& body, const Vector3& gravity, double k, double s) {
+    RigidBody seen = body;
+    if (s <= 0.0) return seen;
+    if (body.is_immovable()) {
+        seen.position += body.velocity * s;
+        return seen;
+    }
+    seen.position += body.velocity * s + gravity * (k * s * s);
+    seen.velocity += gravity * (2.0 * k * s);
+    return seen;
 }
 
 /// The corners of a box touching a plane: those within rounding of the lowest (one, two for an
@@ -188,28 +209,12 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     return contact;
 }
 
-/// Spheres, planes, and boxes that do not spin (whose lowest point follows a parabola) take
-/// part in the event loop; other bodies are left to the discrete back-stop.
+/// Spheres, planes that do not turn, and boxes that do not spin (whose lowest point follows a
+/// parabola) take part in the event loop; other bodies are left to the discrete back-stop.
 bool takes_part(const RigidBody& body) {
-    return body.shape.kind == ShapeKind::sphere || body.shape.kind == ShapeKind::plane ||
+    return body.shape.kind == ShapeKind::sphere ||
+           (body.shape.kind == ShapeKind::plane && body.angular_velocity == Vector3{}) ||
            (body.shape.kind == ShapeKind::box && body.angular_velocity == Vector3{});
-}
-
-/// How far any movable body can get over `limit`, |v| limit + k |g| limit^2 at most: one
-/// number per scan that lets most pairs of spheres be passed over with one squared distance,
-/// as cheap as the discrete loop's overlap test.
-double largest_reach(std::span<const RigidBody> bodies, const Vector3& gravity, double k, double limit) {
-    double fastest_squared = 0.0;
-    for (const RigidBody& body : bodies)
-        if (!body.is_immovable()) fastest_squared = std::max(fastest_squared, length_squared(body.velocity));
-    return std::sqrt(fastest_squared) * limit + std::abs(k) * length(gravity) * limit * limit;
-}
-
-/// False only when spheres a and b are too far apart to touch within the reach of each.
-bool may_meet(const RigidBody& a, const RigidBody& b, double reach) {
-    if (a.shape.kind != ShapeKind::sphere || b.shape.kind != ShapeKind::sphere) return true;
-    const double within = a.shape.radius + b.shape.radius + reach * ((a.is_immovable() ? 0 : 1) + (b.is_immovable() ? 0 : 1));
-    return !(length_squared(a.position - b.position) > within * within);
 }
 
 }  // namespace
@@ -240,86 +245,211 @@ std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, con
     return std::nullopt;
 }
 
-void step_with_event_timing(World& world) {
-    const WorldSettings& settings = world.settings_;
-    const double k = gravity_position_factor(settings.integrator);
-    std::span<RigidBody> bodies = world.bodies_;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    const std::size_t event_budget = std::min<std::size_t>(1024, 8 + 2 * std::size_t{count});
+namespace {
 
-    world.contacts_.clear();
-    world.response_energy_change_ = 0.0;
-    double remaining = settings.time_step;
-    std::size_t events = 0;
-    while (remaining > 0.0 && events < event_budget) {
-        double earliest = remaining;
-        std::uint32_t first = count;
-        std::uint32_t second = count;
-        const double reach = largest_reach(bodies, settings.gravity, k, remaining);
-        for (std::uint32_t i = 0; i < count; ++i) {
-            if (!takes_part(bodies[i])) continue;
-            for (std::uint32_t j = i + 1; j < count; ++j) {
-                if (!takes_part(bodies[j]) || !may_meet(bodies[i], bodies[j], reach)) continue;
-                if (auto t = time_of_impact(bodies[i], bodies[j], settings.gravity, k, earliest)) {
-                    if (first == count || *t < earliest) {
-                        earliest = *t;
-                        first = i;
-                        second = j;
-                    }
-                }
+/// The heap's order: the earliest event on top, and among equally early ones the smallest
+/// pair (i, then j), the one a scan of every pair in index order would pick.
+bool later(const ImpactEvent& a, const ImpactEvent& b) {
+    if (a.t != b.t) return a.t > b.t;
+    if (a.i != b.i) return a.i > b.i;
+    return a.j > b.j;
+}
+
+/// The event loop of one step over `bodies`; see step_with_event_timing().
+class EventLoop {
+public:
+    EventLoop(std::span<RigidBody> bodies, const WorldSettings& settings, EventScratch& scratch)
+        : bodies_(bodies), scratch_(scratch), gravity_(settings.gravity), k_(gravity_position_factor(settings.integrator)),
+          dt_(settings.time_step), count_(static_cast<std::uint32_t>(bodies.size())) {}
+
+    /// Finds the candidate pairs of the step and their first impacts.
+    void start() {
+        EventScratch& s = scratch_;
+        s.since.assign(count_, 0.0);
+        s.events.assign(count_, 0);
+        s.reach.assign(count_, 0.0);
+        s.extra.clear();
+        s.heap.clear();
+        s.contacts.clear();
+        // How far each body may move this step: twice the larger of its speed and the scene's
+        // root-mean-square speed, plus what gravity adds. A body that an impact speeds up
+        // beyond that is searched again (outran()), so this only sets how often that happens.
+        double sum_squares = 0.0;
+        std::size_t movable = 0;
+        for (const RigidBody& body : bodies_)
+            if (!body.is_immovable()) sum_squares += length_squared(body.velocity), ++movable;
+        const double rms = movable > 0 ? std::sqrt(sum_squares / static_cast<double>(movable)) : 0.0;
+        const double g = length(gravity_);
+        s.proxies.clear(count_);
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
+            const double speed = length(body.velocity);
+            double reach = speed * dt_;
+            if (!body.is_immovable()) reach = (2.0 * std::max(speed, rms) + g * dt_) * dt_ + std::abs(k_) * g * dt_ * dt_;
+            s.reach[i] = takes_part(body) ? reach : 0.0;
+            s.proxies.add(body, i, 0.0, {}, s.reach[i]);
+        }
+        s.broad_phase.find_pairs(s.proxies, s.pairs);
+        // A plane that moves (kinematic) is met wherever it goes: it is a candidate of every body.
+        for (std::uint32_t i = 0; i < count_; ++i)
+            if (bodies_[i].shape.kind == ShapeKind::plane && bodies_[i].velocity != Vector3{} && takes_part(bodies_[i]))
+                for (std::uint32_t j = 0; j < count_; ++j)
+                    if (j != i) s.extra.push_back({std::min(i, j), std::max(i, j)});
+        // Each body's candidates, as lists by body (a counting sort of the pairs).
+        s.start.assign(count_ + 1, 0);
+        for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
+        for (std::uint32_t i = 0; i < count_; ++i) s.start[i + 1] += s.start[i];
+        s.partners.resize(s.start[count_]);
+        for (const BodyPair& p : s.pairs) {
+            s.partners[s.start[p.first]++] = p.second;
+            s.partners[s.start[p.second]++] = p.first;
+        }
+        for (std::uint32_t i = count_; i > 0; --i) s.start[i] = s.start[i - 1];
+        s.start[0] = 0;
+        for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
+        for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
+    }
+
+    /// The earliest pending event that still holds, or nothing.
+    std::optional<ImpactEvent> next() {
+        EventScratch& s = scratch_;
+        while (!s.heap.empty()) {
+            std::pop_heap(s.heap.begin(), s.heap.end(), later);
+            const ImpactEvent e = s.heap.back();
+            s.heap.pop_back();
+            if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
+        }
+        return std::nullopt;
+    }
+
+    /// Advances body i to time t within the step.
+    void advance_to(std::uint32_t i, double t) {
+        advance(bodies_[i], gravity_, k_, t - scratch_.since[i]);
+        scratch_.since[i] = t;
+    }
+
+    /// After an event at time t: body i's impacts are predicted again with each candidate.
+    void changed(std::uint32_t i, double t) {
+        EventScratch& s = scratch_;
+        ++s.events[i];
+        if (s.events[i] >= max_events_per_body || !takes_part(bodies_[i])) return;
+        if (outran(i, t)) search_again(i);
+        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) predict(i, s.partners[n], t);
+        for (const BodyPair& p : s.extra)
+            if (p.first == i || p.second == i) predict(i, p.first == i ? p.second : p.first, t);
+    }
+
+private:
+    /// Pushes the first impact of bodies a and b after time t, if any within the step.
+    void predict(std::uint32_t a, std::uint32_t b, double t) {
+        EventScratch& s = scratch_;
+        const RigidBody& body_a = bodies_[a];
+        const RigidBody& body_b = bodies_[b];
+        if (!takes_part(body_a) || !takes_part(body_b) || (body_a.is_immovable() && body_b.is_immovable())) return;
+        if (s.events[a] >= max_events_per_body || s.events[b] >= max_events_per_body) return;
+        const RigidBody seen_a = seen_after(body_a, gravity_, k_, t - s.since[a]);
+        const RigidBody seen_b = seen_after(body_b, gravity_, k_, t - s.since[b]);
+        const auto tau = time_of_impact(seen_a, seen_b, gravity_, k_, dt_ - t);
+        if (!tau) return;
+        const std::uint32_t i = std::min(a, b), j = std::max(a, b);
+        s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
+        std::push_heap(s.heap.begin(), s.heap.end(), later);
+    }
+
+    /// True when body i, as it now moves, may leave the widened sphere its candidates were
+    /// found for before the step ends.
+    bool outran(std::uint32_t i, double t) const {
+        const RigidBody& body = bodies_[i];
+        if (body.is_immovable()) return false;
+        const GridProxy& p = scratch_.proxies.proxies[i];
+        const double left = dt_ - t;
+        const double g = length(gravity_);
+        const double moved = length(body.position - Vector3{p.x, p.y, p.z});
+        return moved + length(body.velocity) * left + (std::abs(k_) + 1.0) * g * left * left > scratch_.reach[i];
+    }
+
+    /// Widens body i's reach to the rest of the step at its new speed, with room, and adds as
+    /// candidates every body whose widened sphere it now meets (a pass over all bodies; rare).
+    void search_again(std::uint32_t i) {
+        EventScratch& s = scratch_;
+        const RigidBody& body = bodies_[i];
+        const GridProxy& p = s.proxies.proxies[i];
+        const Vector3 centre{p.x, p.y, p.z};
+        const double g = length(gravity_);
+        s.reach[i] = 2.0 * (length(body.position - centre) + length(body.velocity) * dt_ + (std::abs(k_) + 1.0) * g * dt_ * dt_);
+        const double own = bounding_radius(body) + s.reach[i];
+        for (std::uint32_t j = 0; j < count_; ++j) {
+            if (j == i || !takes_part(bodies_[j])) continue;
+            const GridProxy& q = s.proxies.proxies[j];
+            bool near = false;
+            if (q.plane) {
+                const Vector3 normal = rotate(bodies_[j].orientation, bodies_[j].shape.normal);
+                near = dot(centre - bodies_[j].position, normal) <= own * (1.0 + 1e-9);
+            } else {
+                const double within = (own + q.radius) * (1.0 + 1e-9);
+                near = length_squared(centre - Vector3{q.x, q.y, q.z}) <= within * within;
             }
-        }
-        advance(bodies, settings.gravity, k, earliest);
-        world.guard("event: advance");
-        remaining -= earliest;
-        if (first == count) {
-            remaining = 0.0;
-            break;
-        }
-        // Body 2 of a pair with a plane is the plane, as everywhere else.
-        if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
-        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-        if (world.model_.respond != nullptr) {
-            const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
-            world.model_.respond(bodies[first], bodies[second], contact);
-            world.response_energy_change_ += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
-        }
-        // Kept for the probes (how many contacts this step answered). The world reserves room for
-        // every pair; only a step with more events than pairs, which the event budget allows,
-        // can make this grow.
-        world.contacts_.push_back(contact);
-        world.guard("event: respond");
-        ++events;
-        // Without a responder nothing changes at an impact, and the same pair would be found
-        // again at once; let the bodies pass as the discrete loop would.
-        if (world.model_.respond == nullptr) {
-            advance(bodies, settings.gravity, k, remaining);
-            remaining = 0.0;
+            if (near) s.extra.push_back({std::min(i, j), std::max(i, j)});
         }
     }
-    if (remaining > 0.0) advance(bodies, settings.gravity, k, remaining);  // the event budget ran out
 
-    // The discrete back-stop: whatever still overlaps beyond rounding.
-    const std::size_t first_overlap = world.contacts_.size();
-    for (std::uint32_t i = 0; i < count; ++i)
-        for (std::uint32_t j = i + 1; j < count; ++j) {
-            if (bodies[i].is_immovable() && bodies[j].is_immovable()) continue;
-            if (auto contact = collide(bodies[i], i, bodies[j], j)) world.contacts_.push_back(*contact);
+    std::span<RigidBody> bodies_;
+    EventScratch& scratch_;
+    Vector3 gravity_;
+    double k_;
+    double dt_;
+    std::uint32_t count_;
+};
+
+}  // namespace
+
+void step_with_event_timing(World& world) {
+    const WorldSettings& settings = world.settings_;
+    std::span<RigidBody> bodies = world.bodies_;
+    EventScratch& scratch = world.event_scratch_;
+    const auto count = static_cast<std::uint32_t>(bodies.size());
+    const ResponseModel& model = world.model_;
+
+    // Without a responder nothing changes at an impact: the bodies pass as the discrete loop
+    // would, so there are no events to follow.
+    double energy_change = 0.0;
+    EventLoop loop(bodies, settings, scratch);
+    if (model.respond != nullptr) {
+        loop.start();
+        const std::size_t event_budget = 8 + 2 * std::size_t{count};
+        for (std::size_t events = 0; events < event_budget; ++events) {
+            const std::optional<ImpactEvent> event = loop.next();
+            if (!event) break;
+            std::uint32_t first = event->i, second = event->j;
+            loop.advance_to(first, event->t);
+            loop.advance_to(second, event->t);
+            // Body 2 of a pair with a plane is the plane, as everywhere else.
+            if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
+            const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
+            const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+            model.respond(bodies[first], bodies[second], contact);
+            energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+            scratch.contacts.push_back(contact);
+            const std::uint32_t changed[] = {first, second};
+            world.guard_bodies("event: respond", changed);
+            loop.changed(first, event->t);
+            loop.changed(second, event->t);
         }
-    const std::span<const Contact> overlaps = std::span<const Contact>(world.contacts_).subspan(first_overlap);
-    if (world.model_.respond != nullptr)
-        for (const Contact& contact : overlaps) {
-            RigidBody& b1 = bodies[contact.body1];
-            RigidBody& b2 = bodies[contact.body2];
-            const double before = kinetic_energy(b1) + kinetic_energy(b2);
-            world.model_.respond(b1, b2, contact);
-            world.response_energy_change_ += kinetic_energy(b1) + kinetic_energy(b2) - before;
-        }
-    world.guard("respond");
-    if (world.model_.correct != nullptr)
-        for (const Contact& contact : overlaps)
-            world.model_.correct(bodies[contact.body1], bodies[contact.body2], contact, settings.position_correction);
-    world.guard("correct");
+    } else {
+        scratch.since.assign(count, 0.0);
+    }
+    // Every body to the end of the step, each from the time its state refers to.
+    for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
+    world.guard("event: advance");
+
+    // The discrete back-stop: whatever still overlaps beyond rounding, with the world's own
+    // detection, response and correction.
+    world.find_contacts(false);
+    if (!(world.respond_contacts() == 0.0)) world.guard("respond");
+    if (!(world.correct_contacts() == 0.0)) world.guard("correct");
+    world.response_energy_change_ += energy_change;
+    // The contacts answered at their moment come first, in the order they were answered.
+    world.contacts_.insert(world.contacts_.begin(), scratch.contacts.begin(), scratch.contacts.end());
 }
 
 }  // namespace workbook

@@ -149,6 +149,9 @@ void World::gather_body(std::uint32_t i, bool swept, double dt, const Vector3& g
         if (body.shape.kind == ShapeKind::sphere) {
             travel = length(body.position - start);
             smallest_radius = std::min(smallest_radius, body.shape.radius);
+        } else if (body.shape.kind == ShapeKind::box) {
+            // A box is not traced, but a fast sphere's path must be met where the box went.
+            travel = length(body.position - start);
         }
     }
     proxies_.add(body, i, travel, start);

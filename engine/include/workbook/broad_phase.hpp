@@ -33,7 +33,7 @@ struct GridProxy {
     double y = 0.0;             ///< centre, y, m
     double z = 0.0;             ///< centre, z, m
     double radius = 0.0;        ///< bounding radius, m (workbook::bounding_radius; unused for a plane)
-    double travel = 0.0;        ///< how far a swept sphere moved this step, m; 0 for every other body
+    double travel = 0.0;        ///< how far a swept sphere or a box moved this step, m; 0 for every other body
     Vector3 start{};            ///< with a swept set: where the body started the step, m (next to its end,
                                 ///< so that the swept test reads both from one place)
     std::uint32_t index = 0;    ///< body index
@@ -84,8 +84,10 @@ struct ProxySet {
         spheres = 0;
     }
 
-    /// Appends body `index` (the next one in body order), with the travel and start of a swept sphere.
-    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {}) {
+    /// Appends body `index` (the next one in body order), with the travel and start of a swept
+    /// sphere; `inflate` widens its bounding sphere (event timing's reach over a step).
+    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {},
+             double inflate = 0.0) {
         if (body.shape.kind == ShapeKind::plane) {
             add_plane(body, index);
             return;
@@ -95,7 +97,7 @@ struct ProxySet {
         p.y = body.position.y;
         p.z = body.position.z;
         p.sphere = body.shape.kind == ShapeKind::sphere;
-        p.radius = p.sphere ? body.shape.radius : bounding_radius(body);
+        p.radius = (p.sphere ? body.shape.radius : bounding_radius(body)) + inflate;
         p.travel = travel;
         p.start = start;
         p.index = index;
@@ -167,7 +169,7 @@ public:
     /// in no particular order), as entries: the index (entry & partner_index), and the flag
     /// partner_may_touch unless spheres_may_touch() said no for the two paths as gathered (it
     /// must be asked again if the partner has been moved since). Planes always carry the flag.
-    /// Spheres and planes only. Empty for a body that is not fast.
+    /// Spheres, planes and boxes (boxes always carry the flag). Empty for a body that is not fast.
     [[nodiscard]] std::span<const std::uint32_t> sweep_partners(std::uint32_t body) const {
         if (body + 1 >= sweep_start_.size()) return {};
         return std::span<const std::uint32_t>(sweep_partners_).subspan(sweep_start_[body],

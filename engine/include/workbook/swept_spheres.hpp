@@ -1,7 +1,9 @@
 #pragma once
 /// \file
 /// The swept test of discrete timing: a sphere that moved further than the smallest radius in
-/// a step is traced along its path, so that it cannot pass through another body unseen.
+/// a step is traced along its path against spheres, planes and boxes, so that it cannot pass
+/// through another body unseen. Boxes themselves are not traced: a fast box can pass through a
+/// thin body between two steps (docs/scene-format.md says so where scenes are described).
 
 #include <cstdint>
 #include <vector>
@@ -61,7 +63,7 @@ struct SweepScratch {
 
 /// After detect(): every sphere that moved further than the smallest radius in the world is
 /// traced from where it started the step to where it ended, in index order; if it went through
-/// another sphere, or its centre ended behind a plane, it goes back to the moment of touching
+/// another sphere or a box, or its centre ended behind a plane, it goes back to the moment of touching
 /// and its contacts are detected again there, plus that touch unless the partner overlaps it
 /// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
 /// are traced against the part of its path it did travel. With the grid of this step's

@@ -12,6 +12,7 @@
 
 #include "workbook/broad_phase.hpp"
 #include "workbook/contact.hpp"
+#include "workbook/event_timing.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
@@ -180,6 +181,7 @@ private:
     std::vector<BodyPair> pairs_;
     ProxySet proxies_;
     SweepScratch sweep_scratch_;
+    EventScratch event_scratch_;
     Shortcuts shortcuts_;
     bool used_broad_phase_ = false;
     WorldSettings settings_;
