@@ -38,6 +38,9 @@ struct StressScene {
     bool check_energy = true;    ///< every body has e <= 1
     bool check_momentum = false;  ///< no gravity and no immovable body
     std::optional<Box> box;       ///< the closed box, if the scene has one
+    /// A check of the scene's own, after every step: measured / allowed (<= 1 passes), and its name.
+    std::function<double(const World&)> own_check;
+    std::string own_check_name;
 };
 
 /// The outcome of one scene.
