@@ -398,4 +398,42 @@ void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs) {
     sweep_start_[0] = 0;
 }
 
+void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double radius,
+                             std::vector<std::uint32_t>& out) const {
+    const auto near = [&](const GridProxy& q) {
+        const double within = (radius + q.radius) * (1.0 + 1e-9);
+        const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
+        return dx * dx + dy * dy + dz * dz <= within * within;
+    };
+    for (const PlaneProxy& plane : set.planes)
+        if (dot(centre - plane.point, plane.normal) <= radius * (1.0 + 1e-9)) out.push_back(plane.index);
+    if (!has_grid_) {
+        for (const GridProxy& q : set.proxies)
+            if (!q.plane && near(q)) out.push_back(q.index);
+        return;
+    }
+    // Every proxy in the grid is at most largest_radius_ wide, so one within reach has its
+    // centre within radius + largest_radius_ of `centre`: the cells that far around its cell.
+    const double c[3] = {centre.x, centre.y, centre.z};
+    const double far = (radius + largest_radius_) * (1.0 + 1e-9) * inverse_cell_;
+    const double k = far < 1e15 ? std::floor(far) + 1.0 : 1e15;
+    std::uint64_t from[3], to[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        // The range of cells in doubles first: a centre outside the grid has a negative index.
+        const double at = std::floor((c[axis] - low_[axis]) * inverse_cell_);
+        const double last = static_cast<double>(cells_[axis] - 1);
+        const double lo = std::clamp(at - k, 0.0, last), hi = std::clamp(at + k, 0.0, last);
+        if (!(at + k >= 0.0 && at - k <= last)) return;  // (also for a NaN centre)
+        from[axis] = static_cast<std::uint64_t>(lo);
+        to[axis] = static_cast<std::uint64_t>(hi);
+    }
+    const std::uint64_t nx = cells_[0], ny = cells_[1];
+    for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+        for (std::uint64_t y = from[1]; y <= to[1]; ++y) {
+            const std::uint64_t row = (z * ny + y) * nx;
+            for (std::uint32_t t = cell_start_[row + from[0]]; t < cell_start_[row + to[0] + 1]; ++t)
+                if (near(by_cell_[t])) out.push_back(by_cell_[t].index);
+        }
+}
+
 }  // namespace workbook

@@ -269,32 +269,27 @@ public:
         s.events.assign(count_, 0);
         s.reach.assign(count_, 0.0);
         s.extra.clear();
+        s.extra_head.assign(count_, no_extra);
+        s.extra_nodes.clear();
         s.heap.clear();
         s.contacts.clear();
-        // How far each body may move this step: twice the larger of its speed and the scene's
-        // root-mean-square speed, plus what gravity adds. A body that an impact speeds up
-        // beyond that is searched again (outran()), so this only sets how often that happens.
-        double sum_squares = 0.0;
-        std::size_t movable = 0;
-        for (const RigidBody& body : bodies_)
-            if (!body.is_immovable()) sum_squares += length_squared(body.velocity), ++movable;
-        const double rms = movable > 0 ? std::sqrt(sum_squares / static_cast<double>(movable)) : 0.0;
-        const double g = length(gravity_);
+        // Each body's bounding sphere widened by how far it can move this step at the velocity
+        // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
+        // body that an impact sends further is searched again (outran()).
         s.proxies.clear(count_);
         for (std::uint32_t i = 0; i < count_; ++i) {
-            const RigidBody& body = bodies_[i];
-            const double speed = length(body.velocity);
-            double reach = speed * dt_;
-            if (!body.is_immovable()) reach = (2.0 * std::max(speed, rms) + g * dt_) * dt_ + std::abs(k_) * g * dt_ * dt_;
-            s.reach[i] = takes_part(body) ? reach : 0.0;
-            s.proxies.add(body, i, 0.0, {}, s.reach[i]);
+            s.reach[i] = can_move(bodies_[i], dt_);
+            s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs);
-        // A plane that moves (kinematic) is met wherever it goes: it is a candidate of every body.
-        for (std::uint32_t i = 0; i < count_; ++i)
-            if (bodies_[i].shape.kind == ShapeKind::plane && bodies_[i].velocity != Vector3{} && takes_part(bodies_[i]))
-                for (std::uint32_t j = 0; j < count_; ++j)
-                    if (j != i) s.extra.push_back({std::min(i, j), std::max(i, j)});
+        // A kinematic plane that moves or turns can meet any body: each is its candidate.
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
+            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
+                continue;
+            for (std::uint32_t j = 0; j < count_; ++j)
+                if (j != i) add_extra(i, j);
+        }
         // Each body's candidates, as lists by body (a counting sort of the pairs).
         s.start.assign(count_ + 1, 0);
         for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
@@ -332,14 +327,49 @@ public:
     void changed(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
         ++s.events[i];
+        if (outran(i, t)) search_again(i, t);
         if (s.events[i] >= max_events_per_body || !takes_part(bodies_[i])) return;
-        if (outran(i, t)) search_again(i);
         for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) predict(i, s.partners[n], t);
-        for (const BodyPair& p : s.extra)
-            if (p.first == i || p.second == i) predict(i, p.first == i ? p.second : p.first, t);
+        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
+    }
+
+    /// Every pair that may overlap at the end of the step, each once, sorted by (first, second):
+    /// the candidates, which hold every pair whose bodies came near each other.
+    std::span<const BodyPair> pairs_to_check() {
+        EventScratch& s = scratch_;
+        if (s.extra.empty()) return s.pairs;
+        s.all_pairs.assign(s.pairs.begin(), s.pairs.end());
+        s.all_pairs.insert(s.all_pairs.end(), s.extra.begin(), s.extra.end());
+        const auto order = [](const BodyPair& a, const BodyPair& b) {
+            return a.first != b.first ? a.first < b.first : a.second < b.second;
+        };
+        std::sort(s.all_pairs.begin(), s.all_pairs.end(), order);
+        const auto same = [](const BodyPair& a, const BodyPair& b) { return a.first == b.first && a.second == b.second; };
+        s.all_pairs.erase(std::unique(s.all_pairs.begin(), s.all_pairs.end(), same), s.all_pairs.end());
+        return s.all_pairs;
     }
 
 private:
+    static constexpr std::uint32_t no_extra = std::numeric_limits<std::uint32_t>::max();
+
+    /// How far `body` may move in `left` seconds from the state it has, m: |v| left, plus for
+    /// a movable body what gravity adds, (|k| + 1) |g| left^2, which also covers the motion
+    /// being split into pieces at its events (each piece starts with the velocity gravity gave).
+    [[nodiscard]] double can_move(const RigidBody& body, double left) const {
+        const double speed_part = length(body.velocity) * left;
+        return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+    }
+
+    /// Records bodies a and b as candidates found after the broad phase.
+    void add_extra(std::uint32_t a, std::uint32_t b) {
+        EventScratch& s = scratch_;
+        s.extra.push_back({std::min(a, b), std::max(a, b)});
+        s.extra_nodes.push_back({b, s.extra_head[a]});
+        s.extra_head[a] = static_cast<std::uint32_t>(s.extra_nodes.size() - 1);
+        s.extra_nodes.push_back({a, s.extra_head[b]});
+        s.extra_head[b] = static_cast<std::uint32_t>(s.extra_nodes.size() - 1);
+    }
+
     /// Pushes the first impact of bodies a and b after time t, if any within the step.
     void predict(std::uint32_t a, std::uint32_t b, double t) {
         EventScratch& s = scratch_;
@@ -366,47 +396,28 @@ private:
         std::push_heap(s.heap.begin(), s.heap.end(), later);
     }
 
-    /// How far `body` may move in `left` seconds at its present velocity, m.
-    [[nodiscard]] double can_move(const RigidBody& body, double left) const {
-        const double speed_part = length(body.velocity) * left;
-        return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
-    }
-
-    /// True when body i, as it now moves, may leave the widened sphere its candidates were
-    /// found for before the step ends.
-    bool outran(std::uint32_t i, double t) const {
-        const RigidBody& body = bodies_[i];
-        if (body.is_immovable()) return false;
+    /// How far body i, as it now moves, may get from where it started the step by the end.
+    [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
         const GridProxy& p = scratch_.proxies.proxies[i];
-        const double left = dt_ - t;
-        const double g = length(gravity_);
-        const double moved = length(body.position - Vector3{p.x, p.y, p.z});
-        return moved + length(body.velocity) * left + (std::abs(k_) + 1.0) * g * left * left > scratch_.reach[i];
+        return length(bodies_[i].position - Vector3{p.x, p.y, p.z}) + can_move(bodies_[i], dt_ - t);
     }
 
-    /// Widens body i's reach to the rest of the step at its new speed, with room, and adds as
-    /// candidates every body whose widened sphere it now meets (a pass over all bodies; rare).
-    void search_again(std::uint32_t i) {
+    /// True when body i may leave the widened sphere its candidates were found for.
+    [[nodiscard]] bool outran(std::uint32_t i, double t) const {
+        return !bodies_[i].is_immovable() && needs_reach(i, t) > scratch_.reach[i];
+    }
+
+    /// Widens body i's reach to what it now needs, twice over (so that a body sped up again
+    /// and again is searched a few times, not at every event), and adds as candidates the
+    /// bodies whose widened spheres its new one meets, from the cells near it.
+    void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
-        const RigidBody& body = bodies_[i];
+        s.reach[i] = 2.0 * needs_reach(i, t);
         const GridProxy& p = s.proxies.proxies[i];
-        const Vector3 centre{p.x, p.y, p.z};
-        const double g = length(gravity_);
-        s.reach[i] = 2.0 * (length(body.position - centre) + length(body.velocity) * dt_ + (std::abs(k_) + 1.0) * g * dt_ * dt_);
-        const double own = bounding_radius(body) + s.reach[i];
-        for (std::uint32_t j = 0; j < count_; ++j) {
-            if (j == i || !takes_part(bodies_[j])) continue;
-            const GridProxy& q = s.proxies.proxies[j];
-            bool near = false;
-            if (q.plane) {
-                const Vector3 normal = rotate(bodies_[j].orientation, bodies_[j].shape.normal);
-                near = dot(centre - bodies_[j].position, normal) <= own * (1.0 + 1e-9);
-            } else {
-                const double within = (own + q.radius) * (1.0 + 1e-9);
-                near = length_squared(centre - Vector3{q.x, q.y, q.z}) <= within * within;
-            }
-            if (near) s.extra.push_back({std::min(i, j), std::max(i, j)});
-        }
+        s.near.clear();
+        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, bounding_radius(bodies_[i]) + s.reach[i], s.near);
+        for (const std::uint32_t j : s.near)
+            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_extra(i, j);
     }
 
     std::span<RigidBody> bodies_;
@@ -430,37 +441,44 @@ void step_with_event_timing(World& world) {
     // would, so there are no events to follow.
     double energy_change = 0.0;
     EventLoop loop(bodies, settings, scratch);
-    if (model.respond != nullptr) {
-        loop.start();
-        const std::size_t event_budget = 8 + 2 * std::size_t{count};
-        for (std::size_t events = 0; events < event_budget; ++events) {
-            const std::optional<ImpactEvent> event = loop.next();
-            if (!event) break;
-            std::uint32_t first = event->i, second = event->j;
-            loop.advance_to(first, event->t);
-            loop.advance_to(second, event->t);
-            // Body 2 of a pair with a plane is the plane, as everywhere else.
-            if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
-            const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-            const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
-            model.respond(bodies[first], bodies[second], contact);
-            energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
-            scratch.contacts.push_back(contact);
-            const std::uint32_t changed[] = {first, second};
-            world.guard_bodies("event: respond", changed);
-            loop.changed(first, event->t);
-            loop.changed(second, event->t);
-        }
-    } else {
+    if (model.respond == nullptr) {
         scratch.since.assign(count, 0.0);
+        for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
+        world.guard("event: advance");
+        world.find_contacts(false);
+        if (!(world.correct_contacts() == 0.0)) world.guard("correct");
+        world.response_energy_change_ = 0.0;
+        return;
+    }
+    loop.start();
+    const std::size_t event_budget = 8 + 2 * std::size_t{count};
+    for (std::size_t events = 0; events < event_budget; ++events) {
+        const std::optional<ImpactEvent> event = loop.next();
+        if (!event) break;
+        std::uint32_t first = event->i, second = event->j;
+        loop.advance_to(first, event->t);
+        loop.advance_to(second, event->t);
+        // Body 2 of a pair with a plane is the plane, as everywhere else.
+        if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
+        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
+        const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+        model.respond(bodies[first], bodies[second], contact);
+        energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+        scratch.contacts.push_back(contact);
+        const std::uint32_t changed[] = {first, second};
+        world.guard_bodies("event: respond", changed);
+        loop.changed(first, event->t);
+        loop.changed(second, event->t);
     }
     // Every body to the end of the step, each from the time its state refers to.
     for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
     world.guard("event: advance");
 
-    // The discrete back-stop: whatever still overlaps beyond rounding, with the world's own
-    // detection, response and correction.
-    world.find_contacts(false);
+    // The discrete back-stop: whatever still overlaps beyond rounding (deep initial overlaps,
+    // resting contacts, pairs left out of the event loop), in index order as detect() would
+    // find them, among the candidates, then the world's own response and correction.
+    world.contacts_.clear();
+    for (const auto [i, j] : loop.pairs_to_check()) world.add_contact_if_any(i, j);
     if (!(world.respond_contacts() == 0.0)) world.guard("respond");
     if (!(world.correct_contacts() == 0.0)) world.guard("correct");
     world.response_energy_change_ += energy_change;

@@ -161,6 +161,12 @@ public:
     static constexpr std::uint32_t partner_may_touch = std::uint32_t{1} << 31;  ///< see sweep_partners()
     static constexpr std::uint32_t partner_index = partner_may_touch - 1;      ///< see sweep_partners()
 
+    /// After a find_pairs() of `set` (the same set): appends to `out` the index of every body
+    /// of the set whose bounding sphere (as gathered) comes within `radius` of `centre`, and
+    /// of every plane within `radius` of it; conservative by a relative 1e-9. Visits only the
+    /// cells near `centre` when there is a grid, every body otherwise.
+    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out) const;
+
     /// True when the last find_pairs() used a grid (false after it fell back to every pair).
     [[nodiscard]] bool has_grid() const { return has_grid_; }
 

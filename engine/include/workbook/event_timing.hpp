@@ -60,6 +60,14 @@ struct EventScratch {
     std::vector<std::uint32_t> start;      ///< per body, into partners (a counting sort of pairs)
     std::vector<std::uint32_t> partners;
     std::vector<BodyPair> extra;           ///< candidates found later, for a body that outran its reach
+    /// The same by body: extra_head[i] is body i's first node (or none), each node a partner.
+    std::vector<std::uint32_t> extra_head;
+    struct ExtraNode {
+        std::uint32_t partner, next;
+    };
+    std::vector<ExtraNode> extra_nodes;
+    std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
+    std::vector<BodyPair> all_pairs;       ///< candidates and extras, sorted, for the back-stop
     std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
     std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
 };
