@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`./workbook bench speed`: the gas of issue 12 in the workbook and in its peers, one run.
+"""`./workbook bench speed`: the 2D gas in the workbook and in its peers, one run.
 
 For every engine (workbook, chipmunk, box2d, bullet) and every N it runs
 `workbook-gas ENGINE N STEPS` REPEAT times in its own process, and keeps the fastest time
@@ -14,7 +14,7 @@ and the relative drift of kinetic energy. It writes
 
 With --record it also copies them (the figure as SVG only) into bench/results/: the recorded run that the
 site shows when its build has not run the bench itself (docs/CMakeLists.txt), and that
-tests/bench/recorded_speed.py holds to the goals of issue 12.
+tests/bench/recorded_speed.py holds to the speed goals (performance.md says which).
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread),
 which waiting for a core on a shared machine does not inflate. Other work on the machine still
@@ -229,7 +229,7 @@ def figure(rows, figures, engines):
         "set logscale xy", "set format x '10^{%T}'", "set format y '10^{%T}'",
         f"set xrange [{n_low / 1.25:g}:{n_high * 1.25:g}]", f"set yrange [{t_low / 2:g}:{t_high * 2:g}]",
         "set xlabel 'N / bodies' font label_font", "set ylabel 'time per step / ms' font label_font",
-        "set title 'The 2D gas of issue 12: time per step against N' font title_font",
+        "set title 'The 2D gas of the speed bench: time per step against N' font title_font",
         "set key inside top left vertical Left reverse",
         "plot " + ", ".join(plots)])
     script = blocks[:]
@@ -250,7 +250,7 @@ def read_rows(csv_path):
 PAGE = """# Performance {{#performance}}
 
 How fast the workbook's engine steps, side by side with the engines people would pick
-instead, on one machine in one run. The scene is the 2D gas of issue 12: N discs of radius
+instead, on one machine in one run. The scene is the 2D gas of the speed bench: N discs of radius
 0.05 m and mass 1 kg in a square box of side \\f$L = 10\\sqrt{{N/1000}}\\f$ m with four walls,
 velocities uniform in [-5, 5] m/s, \\f$e = 1\\f$, no gravity, time step 1/60 s, started on a
 grid (`bench/gas.cpp`; each peer's set-up is in `bench/gas_<engine>.cpp`). Reproduce with

@@ -1,4 +1,4 @@
-// The accuracy goals of issue 13, as value assertions, for chapter 3's families. The responder
+// The accuracy goals (tools/accuracy/bench.hpp), as value assertions, for chapter 3's families. The responder
 // is chapter 3's own: the reference linear_impulse::resolve with chapter 2's projection, taken
 // from the response model table by name ("linear-impulse"), so what is checked is what the
 // chapter teaches.

@@ -1,7 +1,7 @@
 // The swept test for fast spheres (engine/src/swept_spheres.cpp) moves a sphere that went
 // through another back to where they touched. What it leaves at that place must be answered
 // in the same step like any other overlap: the stress corpus's 100 g pile once pushed ball
-// centres through the walls of its box because it was not (issue 13).
+// centres through the walls of its box because it was not.
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>

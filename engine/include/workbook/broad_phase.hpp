@@ -125,7 +125,7 @@ private:
 /// gas, a pile, a few bodies) a grid whose cells are one diameter wide finds each body's
 /// neighbours in the 3 x 3 x 3 cells around it, a constant amount of work per body, so the
 /// whole pass is linear in N. Sort-and-sweep along one axis finds every body whose extent
-/// overlaps along that axis: in the 2D gas of issue 12 that is a strip through the whole box,
+/// overlaps along that axis: in the 2D gas of the speed bench (bench/gas.hpp) that is a strip through the whole box,
 /// about N * 2 d / L bodies, so its cost grows as N^1.5 (measured with bench/stages.cpp:
 /// at N = 100,000 the strip holds about 100 bodies against the grid's 0.5 per cell).
 ///

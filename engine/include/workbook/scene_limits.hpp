@@ -14,7 +14,7 @@ struct SceneLimits {
     /// about a gigabyte.
     double max_steps = 1e7;
     /// The world stores contacts in proportion to the contacts there are and finds pairs with a
-    /// uniform grid (issue 12), about 500 bytes a body: 10^5 bodies is the largest the speed
+    /// uniform grid (broad_phase.hpp), about 500 bytes a body: 10^5 bodies is the largest the speed
     /// bench runs (it builds its worlds in code); scene files stop at 10^4, which the sanitizer
     /// build still parses in seconds.
     std::size_t max_bodies = 10000;
