@@ -389,4 +389,11 @@ bool collide_with_box(const RigidBody& a, std::uint32_t index_a, const RigidBody
     return true;
 }
 
+Vector3 nearest_point_on_box(const RigidBody& box, const Vector3& centre, const Vector3& point) {
+    const Vector3 local = rotate(conjugate(box.orientation), point - centre);
+    const Vector3& h = box.shape.half_extents;
+    const Vector3 clamped{std::clamp(local.x, -h.x, h.x), std::clamp(local.y, -h.y, h.y), std::clamp(local.z, -h.z, h.z)};
+    return centre + rotate(box.orientation, clamped);
+}
+
 }  // namespace workbook

@@ -7,6 +7,7 @@
 #include <limits>
 #include <span>
 
+#include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
@@ -170,6 +171,55 @@ RigidBody seen_after(const RigidBody& body, const Vector3& gravity, double k, do
     return seen;
 }
 
+/// A sphere against a box that does not spin. The sphere's centre moves relative to the box
+/// along d + u tau + a tau^2, and the gap is its distance from the box less the radius, which
+/// has no closed form: it is sampled at steps of at most half the radius or the box's
+/// thinnest half extent along that path (so that the sphere cannot cross the box between two
+/// samples), and the first sample inside is bisected to rounding. A grazing touch shorter than
+/// a sample step can be missed; the back-stop answers it if it still overlaps at the end.
+std::optional<double> sphere_box(const RigidBody& sphere, const RigidBody& box, const Vector3& gravity, double k,
+                                 double limit) {
+    const Vector3 d = sphere.position - box.position;
+    const Vector3 u = sphere.velocity - box.velocity;
+    const Vector3 a = (acceleration_of(sphere, gravity) - acceleration_of(box, gravity)) * k;
+    const double r = sphere.shape.radius;
+    const auto gap = [&](double tau) {
+        const Vector3 at = box.position + d + u * tau + a * (tau * tau);
+        return length(at - nearest_point_on_box(box, box.position, at)) - r;
+    };
+    const double path = length(u) * limit + length(a) * limit * limit;
+    const double start = gap(0.0);
+    const Vector3& h = box.shape.half_extents;
+    const double scale = length(d) + r + length(h);
+    bool touching = std::abs(start) <= touching_tolerance * scale;
+    if (touching) {
+        const Vector3 nearest = nearest_point_on_box(box, box.position, sphere.position);
+        if (dot(sphere.position - nearest, u) < 0.0) return 0.0;
+    } else if (start < 0.0 || start > path) {
+        return std::nullopt;  // overlapping already (the back-stop's), or too far to reach it
+    }
+    const double step = 0.5 * std::min({r, h.x, h.y, h.z});
+    const double wanted = std::ceil(path / step);
+    const int samples = static_cast<int>(std::clamp(wanted, 1.0, 4096.0));
+    double previous_t = 0.0;
+    for (int n = 1; n <= samples; ++n) {
+        const double t = limit * n / samples;
+        if (gap(t) < 0.0) {
+            double lo = previous_t, hi = t;
+            for (int j = 0; j < 200; ++j) {
+                const double mid = 0.5 * (lo + hi);
+                if (mid == lo || mid == hi) break;
+                (gap(mid) < 0.0 ? hi : lo) = mid;
+            }
+            // Just bounced off (touching, moving away): a touch at the very start is not a new one.
+            if (touching && lo == 0.0) return std::nullopt;
+            return lo;
+        }
+        previous_t = t;
+    }
+    return std::nullopt;
+}
+
 /// The corners of a box touching a plane: those within rounding of the lowest (one, two for an
 /// edge, four for a face), each a point of the contact.
 void add_touching_corners(const RigidBody& box, const Vector3& plane_point, const Vector3& normal, Contact& contact) {
@@ -194,7 +244,13 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     Contact contact;
     contact.body1 = i1;
     contact.body2 = i2;
-    if (b1.shape.kind == ShapeKind::box) {
+    if (b1.shape.kind == ShapeKind::sphere && b2.shape.kind == ShapeKind::box) {
+        const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
+        const Vector3 offset = b1.position - nearest;
+        const double distance = length(offset);
+        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+        contact.add_point(nearest, 0.0);
+    } else if (b1.shape.kind == ShapeKind::box) {
         contact.normal = rotate(b2.orientation, b2.shape.normal);
         add_touching_corners(b1, b2.position, contact.normal, contact);
     } else if (b2.shape.kind == ShapeKind::plane) {
@@ -242,6 +298,8 @@ std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, con
     };
     if (still_box(a) && kb == ShapeKind::plane) return sphere_plane(a, b, gravity, k, limit);
     if (ka == ShapeKind::plane && still_box(b)) return sphere_plane(b, a, gravity, k, limit);
+    if (ka == ShapeKind::sphere && still_box(b)) return sphere_box(a, b, gravity, k, limit);
+    if (still_box(a) && kb == ShapeKind::sphere) return sphere_box(b, a, gravity, k, limit);
     return std::nullopt;
 }
 
@@ -458,8 +516,10 @@ void step_with_event_timing(World& world) {
         std::uint32_t first = event->i, second = event->j;
         loop.advance_to(first, event->t);
         loop.advance_to(second, event->t);
-        // Body 2 of a pair with a plane is the plane, as everywhere else.
-        if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
+        // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
+        if (bodies[first].shape.kind == ShapeKind::plane ||
+            (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
+            std::swap(first, second);
         const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
         const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
         model.respond(bodies[first], bodies[second], contact);
@@ -478,6 +538,7 @@ void step_with_event_timing(World& world) {
     // resting contacts, pairs left out of the event loop), in index order as detect() would
     // find them, among the candidates, then the world's own response and correction.
     world.contacts_.clear();
+    world.used_broad_phase_ = scratch.broad_phase.has_grid();
     for (const auto [i, j] : loop.pairs_to_check()) world.add_contact_if_any(i, j);
     if (!(world.respond_contacts() == 0.0)) world.guard("respond");
     if (!(world.correct_contacts() == 0.0)) world.guard("correct");

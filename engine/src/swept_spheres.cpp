@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
 #include "workbook/event_timing.hpp"
 #include "workbook/world.hpp"
@@ -48,14 +49,6 @@ std::optional<double> first_touch_spheres(const Vector3& a1, const Vector3& a0, 
     return s < 1.0 ? std::optional<double>(s) : std::nullopt;
 }
 
-/// The point of `box` (centre `centre`, its orientation and half extents) nearest to `point`.
-Vector3 nearest_on_box(const RigidBody& box, const Vector3& centre, const Vector3& point) {
-    const Vector3 local = rotate(conjugate(box.orientation), point - centre);
-    const Vector3& h = box.shape.half_extents;
-    const Vector3 clamped{std::clamp(local.x, -h.x, h.x), std::clamp(local.y, -h.y, h.y), std::clamp(local.z, -h.z, h.z)};
-    return centre + rotate(box.orientation, clamped);
-}
-
 /// The same for a sphere (start a0, end a1, radius ra) and a box (start b0, end b1, turned as
 /// it is at the end). The sphere's centre moves along a straight line relative to the box, and
 /// its distance from a convex body along a line is a convex function of s: its least value is
@@ -69,7 +62,7 @@ std::optional<double> first_touch_box(const Vector3& a1, const Vector3& a0, doub
     // The distance from the box at fraction s of the path, with the box held at its end position.
     const auto distance = [&](double s) {
         const Vector3 centre = b1 + d + u * s;
-        return length(centre - nearest_on_box(box, b1, centre));
+        return length(centre - nearest_point_on_box(box, b1, centre));
     };
     if (!(distance(0.0) >= ra) || !(distance(1.0) >= ra)) return std::nullopt;
     constexpr double golden = 0.6180339887498949;
@@ -224,7 +217,7 @@ void sweep_fast_spheres(World& world) {
         if (plane) {
             contact.normal = rotate(other.orientation, other.shape.normal);
         } else if (other.shape.kind == ShapeKind::box) {
-            const Vector3 offset = fast.position - nearest_on_box(other, other_then, fast.position);
+            const Vector3 offset = fast.position - nearest_point_on_box(other, other_then, fast.position);
             const double distance = length(offset);
             contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
         } else {

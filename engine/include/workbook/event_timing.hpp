@@ -10,8 +10,9 @@
 /// the same acceleration, are then quadratics in tau, so the time of impact has a closed form.
 /// So is the height over a plane of a box that does not spin: its lowest corner moves with its
 /// centre. The one case without a closed form, a movable sphere falling onto an immovable
-/// sphere, is a quartic and is bracketed and bisected instead. Spinning boxes, boxes against
-/// spheres or boxes, and planes that turn are left to the discrete back-stop.
+/// sphere, is a quartic and is bracketed and bisected instead; a sphere against a box that does
+/// not spin is sampled along its path and bisected too. Spinning boxes, two boxes, and planes
+/// that turn are left to the discrete back-stop.
 ///
 /// Why it scales: the pairs that may meet within a step are found once per step by the broad
 /// phase, each body's bounding sphere widened by how far it may move in the step; each body
@@ -36,7 +37,7 @@ enum class Integrator : std::uint8_t;
 double gravity_position_factor(Integrator integrator);
 
 /// The earliest tau in [0, limit] at which `a` and `b` (sphere-sphere, sphere-plane, or a box
-/// that does not spin and a plane, in either order) come into contact while approaching, or
+/// that does not spin and a plane or a sphere, in either order) come into contact while approaching, or
 /// nothing. Pairs that already overlap by more than rounding are left to the discrete back-stop.
 std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, const Vector3& gravity, double k,
                                      double limit);
