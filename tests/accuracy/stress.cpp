@@ -50,3 +50,12 @@ TEST_CASE("the corpus covers what the issue asks for", "[stress]") {
                                  "event-gas"})
         CHECK(names.find(std::string(expected) + " ") != std::string::npos);
 }
+
+TEST_CASE("every refused scene of the corpus is refused, naming its field", "[stress][refused]") {
+    for (const RefusedScene& scene : refused_scenes()) {
+        const RefusalResult result = check_refusal(scene);
+        CAPTURE(scene.name, result.message);
+        CHECK(result.field == scene.field);
+        CHECK(result.passed);
+    }
+}

@@ -8,6 +8,7 @@
 
 #include "workbook/guards.hpp"
 #include "workbook/probes.hpp"
+#include "workbook/scene.hpp"
 
 namespace workbook::accuracy {
 
@@ -303,6 +304,78 @@ StressResult run_stress(const StressScene& scene, const ResponseModel& model,
         result.worst = std::numeric_limits<double>::infinity();
     }
     if (result.worst_invariant.empty()) result.worst_invariant = "-";
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+namespace {
+
+/// A scene with the given top-level members (each followed by a comma) and bodies.
+std::string scene_text(const std::string& members, const std::string& bodies) {
+    return R"({"title": "stress", "responder": "none", )" + members + R"("bodies": [)" + bodies + "]}";
+}
+
+const std::string one_ball = R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})";
+
+}  // namespace
+
+std::vector<RefusedScene> refused_scenes() {
+    const std::string step = R"("time_step": 0.01, "duration": 1, )";
+    std::vector<RefusedScene> scenes;
+    scenes.push_back({"nested-1e5", "a position nested 100,000 arrays deep", [step] {
+                          const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "position": )" +
+                                                      deep + "}");
+                      },
+                      "bodies[0].position[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]"});
+    scenes.push_back({"duplicate-key", "a body gives its mass twice", [step] {
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "mass": 2})");
+                      },
+                      "bodies[0].mass"});
+    scenes.push_back({"box-1e-160", "a box 1e-160 m thick", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1, 1e-160, 1]}, "mass": 1})");
+                      },
+                      "bodies[0].shape.half_extents[1]"});
+    scenes.push_back({"box-1e200", "a box 1e200 m long", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1e200, 1, 1]}, "mass": 1})");
+                      },
+                      "bodies[0].shape.half_extents[0]"});
+    scenes.push_back({"time-step-1e200", "a time step of 1e200 s", [] {
+                          return scene_text(R"("time_step": 1e200, "duration": 1e201, )", one_ball);
+                      },
+                      "time_step"});
+    scenes.push_back({"spin-1e6-skew", "a box spinning at 1e6 rad/s on a skew axis, dt = 0.01 s", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1, 0.5, 0.2]}, "mass": 1, )"
+                                                  R"("angular_velocity": [1e6, 1e6, 0]})");
+                      },
+                      "bodies[0].angular_velocity"});
+    scenes.push_back({"bodies-3e5", "a file of 300,000 bodies (refused in about its reading time)", [step] {
+                          std::string bodies = one_ball;
+                          bodies.reserve(300'000 * (one_ball.size() + 2));
+                          for (int i = 1; i < 300'000; ++i) bodies += ", " + one_ball;
+                          return scene_text(step, bodies);
+                      },
+                      "bodies"});
+    scenes.push_back({"number-1e999", "a position of 1e999 m", [step] {
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "position": [1e999, 0, 0]})");
+                      },
+                      "bodies[0].position[0]"});
+    return scenes;
+}
+
+RefusalResult check_refusal(const RefusedScene& scene) {
+    RefusalResult result;
+    result.scene = scene.name;
+    const std::string text = scene.text();
+    const auto started = std::chrono::steady_clock::now();
+    try {
+        (void)parse_scene(text, scene.name + ".json");
+        result.message = "accepted";
+    } catch (const SceneError& error) {
+        result.field = error.field();
+        result.message = error.what();
+        result.passed = error.field() == scene.field;
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
 }
