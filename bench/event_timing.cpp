@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <ctime>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gas_world.hpp"
+#include "state_hash.hpp"
 
 namespace {
 
@@ -62,6 +64,21 @@ double per_step(World world, int warm, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // --hash: the state hash of the gas (discrete timing, as the speed bench runs it) after
+    // every step, combined, at N = 1,000 (200 steps) and 10,000 (20 steps): what a change that
+    // must not change results compares before and after.
+    if (argc > 1 && std::string(argv[1]) == "--hash") {
+        for (const auto& [n, steps] : {std::pair{1000u, 200}, std::pair{10000u, 20}}) {
+            World world = gas(n, ContactTiming::discrete);
+            testing::StateHash h;
+            for (int i = 0; i < steps; ++i) {
+                world.step();
+                h.add(testing::state_hash(world));
+            }
+            std::printf("gas N = %u, %d steps: %016llx\n", n, steps, static_cast<unsigned long long>(h.value()));
+        }
+        return 0;
+    }
     std::vector<std::uint32_t> counts{1'000, 10'000, 100'000};
     if (argc > 1) {
         counts.clear();

@@ -4,6 +4,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -82,5 +83,15 @@ TEST_CASE("every chapter scene takes the same path with every shortcut on as wit
                 FAIL("turning the energy probe off changed the bodies' path");
             }
         }
+    }
+}
+
+TEST_CASE("print each chapter scene's path hash (run by hand around a change that must not change results)",
+          "[.hashes]") {
+    for (const fs::path& file : every_chapter_scene()) {
+        const Scene scene = load_scene(file);
+        testing::StateHash h;
+        for (const std::uint64_t step_hash : path_of(scene, Shortcuts{})) h.add(step_hash);
+        std::printf("%016llx %s\n", static_cast<unsigned long long>(h.value()), file.filename().string().c_str());
     }
 }
