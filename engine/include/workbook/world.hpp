@@ -107,11 +107,19 @@ public:
     /// A world of `bodies` that steps with `settings` and answers contacts with `model`.
     World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model);
 
-    /// Runs the four stages once and advances the clock.
+    /// Runs the four stages once, in order, and advances the clock: exactly integrate(),
+    /// detect(), respond(), correct() (a test holds it to that, state hash for state hash).
+    /// Under event timing the bodies instead move from impact to impact within the step, each
+    /// answered at its moment (event_timing.hpp), and the same detection, response and
+    /// correction then answer what still overlaps.
     void step();
 
-    void integrate();  ///< stage 1: gravity, then positions and orientations
-    void detect();     ///< stage 2: fills contacts() with every overlapping pair
+    /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
+    /// broad phase's proxies in the same pass, for the detect() that follows.
+    void integrate();
+    /// Stage 2: fills contacts() with every overlapping pair, then (discrete timing, swept
+    /// spheres on) traces each fast sphere along its path (swept_spheres.hpp).
+    void detect();
     void respond();    ///< stage 3: the model's velocity responder, once per contact
     void correct();    ///< stage 4: the model's position corrector, once per contact
 
@@ -123,8 +131,11 @@ public:
     [[nodiscard]] const ResponseModel& model() const { return model_; }
     /// The bodies, in scene order.
     [[nodiscard]] std::span<const RigidBody> bodies() const { return bodies_; }
-    /// The bodies, writable (for tests and tools).
-    [[nodiscard]] std::span<RigidBody> bodies() { return bodies_; }
+    /// The bodies, writable (for tests and tools); the next detect() then gathers them afresh.
+    [[nodiscard]] std::span<RigidBody> bodies() {
+        proxies_fresh_ = false;
+        return bodies_;
+    }
     /// The contacts found by the last detect().
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
 
@@ -180,6 +191,8 @@ private:
     BroadPhase broad_phase_;
     std::vector<BodyPair> pairs_;
     ProxySet proxies_;
+    /// True from an integrate() that gathered proxies_ to the detect() that uses them.
+    bool proxies_fresh_ = false;
     SweepScratch sweep_scratch_;
     EventScratch event_scratch_;
     Shortcuts shortcuts_;
