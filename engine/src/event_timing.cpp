@@ -1,4 +1,5 @@
 #include "workbook/event_timing.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,9 +18,8 @@ namespace workbook {
 
 namespace {
 
-/// Gaps within this share of the scene's length scale count as touching: what rounding
-/// leaves after advancing exactly to a time of impact.
-constexpr double touching_tolerance = 1e-12;
+/// Gaps within this share of the scene's length scale count as touching (tolerances.hpp).
+constexpr double touching_tolerance = tolerances::touching;
 
 /// The smallest root in (0, limit] of a t^2 + b t + c with c > 0 (the pair is apart now), or
 /// nothing. The root is taken in the form that does not cancel.
@@ -441,7 +441,7 @@ private:
         if (body_a.shape.kind != ShapeKind::plane && body_b.shape.kind != ShapeKind::plane) {
             const double within = bounding_radius(body_a) + bounding_radius(body_b) + can_move(body_a, dt_ - s.since[a]) +
                                   can_move(body_b, dt_ - s.since[b]);
-            if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + 1e-9)) return;
+            if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
         }
         // Each as time_of_impact() must see it at t (a copy only for a body whose state is older).
         const auto tau = t == s.since[a] && t == s.since[b]

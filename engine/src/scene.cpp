@@ -1,4 +1,5 @@
 #include "workbook/scene.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -263,9 +264,8 @@ Shape read_shape(const Reader& body, const std::string& path, const std::string&
     shape.fail(shape.field("type"), "unknown shape type \"" + type + "\" (supported: sphere, plane, box)");
 }
 
-/// How far a scene's quaternion may stray from unit length: a hand-typed quaternion with
-/// six or more correct digits is accepted (and normalised), a wrong one is refused.
-constexpr double quaternion_length_tolerance = 1e-6;
+/// How far a scene's quaternion may stray from unit length (tolerances.hpp).
+constexpr double quaternion_length_tolerance = tolerances::quaternion_length;
 
 /// The body's orientation: {"axis": [x, y, z], "angle_degrees": a} or {"quaternion": [w, x, y, z]}.
 Quaternion read_orientation(const Reader& body, const std::string& file) {

@@ -10,6 +10,7 @@
 
 #include "workbook/contact.hpp"
 #include "workbook/rigid_body.hpp"
+#include "workbook/tolerances.hpp"
 #include "workbook/vector3.hpp"
 
 namespace workbook {
@@ -43,12 +44,13 @@ inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, c
     const double rr = radii * radii;
     const double uu = length_squared(u);
     // s* < 1. A pair that can touch started within R + |u|, so |d.u| <= R |u| + u.u and its
-    // rounding stays far below 1e-9 (2 u.u + R^2) >= 1e-9 (u.u + R |u|).
-    if (-approach > uu + 1e-9 * (2.0 * uu + rr)) return false;
+    // rounding stays far below the slack times (2 u.u + R^2) >= slack (u.u + R |u|).
+    constexpr double slack = tolerances::may_touch_slack;
+    if (-approach > uu + slack * (2.0 * uu + rr)) return false;
     // Apart at the end.
-    if (length_squared(a1 - b1) < rr * (1.0 - 1e-9)) return false;
+    if (length_squared(a1 - b1) < rr * (1.0 - slack)) return false;
     const double far = length_squared(d) * uu;
-    return far - approach * approach <= rr * uu + 1e-9 * far;
+    return far - approach * approach <= rr * uu + slack * far;
 }
 
 /// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
