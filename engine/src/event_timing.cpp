@@ -12,6 +12,7 @@
 #include "workbook/detection.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
+#include "workbook/shape_pairs.hpp"
 #include "workbook/world.hpp"
 
 namespace workbook {
@@ -287,19 +288,20 @@ double gravity_position_factor(Integrator integrator) {
 std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, const Vector3& gravity, double k,
                                      double limit) {
     if (a.is_immovable() && b.is_immovable()) return std::nullopt;
-    const ShapeKind ka = a.shape.kind;
-    const ShapeKind kb = b.shape.kind;
-    if (ka == ShapeKind::sphere && kb == ShapeKind::sphere) return sphere_sphere(a, b, gravity, k, limit);
-    if (ka == ShapeKind::sphere && kb == ShapeKind::plane) return sphere_plane(a, b, gravity, k, limit);
-    if (ka == ShapeKind::plane && kb == ShapeKind::sphere) return sphere_plane(b, a, gravity, k, limit);
     // A box that does not spin meets a plane like a sphere whose radius is the box's reach.
-    const auto still_box = [](const RigidBody& body) {
-        return body.shape.kind == ShapeKind::box && body.angular_velocity == Vector3{};
-    };
-    if (still_box(a) && kb == ShapeKind::plane) return sphere_plane(a, b, gravity, k, limit);
-    if (ka == ShapeKind::plane && still_box(b)) return sphere_plane(b, a, gravity, k, limit);
-    if (ka == ShapeKind::sphere && still_box(b)) return sphere_box(a, b, gravity, k, limit);
-    if (still_box(a) && kb == ShapeKind::sphere) return sphere_box(b, a, gravity, k, limit);
+    const bool a_first = a.shape.kind == ShapeKind::sphere || (a.shape.kind == ShapeKind::box && b.shape.kind == ShapeKind::plane);
+    const RigidBody& first = a_first ? a : b;   // the sphere, or the box against a plane
+    const RigidBody& second = a_first ? b : a;
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere: return sphere_sphere(a, b, gravity, k, limit);
+        case ShapePair::sphere_plane: return sphere_plane(first, second, gravity, k, limit);
+        case ShapePair::sphere_box:
+            return (second.angular_velocity == Vector3{}) ? sphere_box(first, second, gravity, k, limit) : std::nullopt;  // a box that does not spin
+        case ShapePair::plane_box:
+            return (first.angular_velocity == Vector3{}) ? sphere_plane(first, second, gravity, k, limit) : std::nullopt;
+        case ShapePair::plane_plane:
+        case ShapePair::box_box: return std::nullopt;  // never met / left to the back-stop
+    }
     return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
 #include "workbook/event_timing.hpp"
+#include "workbook/shape_pairs.hpp"
 #include "workbook/world.hpp"
 
 namespace workbook {
@@ -87,12 +88,17 @@ std::optional<double> first_touch_box(const Vector3& a1, const Vector3& a0, doub
 
 /// The touch of fast sphere `a` (start a0) with body `b` (start b0), or nothing.
 std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const RigidBody& b, const Vector3& b0) {
-    switch (b.shape.kind) {
-        case ShapeKind::sphere: return first_touch_spheres(a.position, a0, a.shape.radius, b.position, b0, b.shape.radius);
-        case ShapeKind::box: return first_touch_box(a.position, a0, a.shape.radius, b, b.position, b0);
-        case ShapeKind::plane: break;
+    // `a` is a sphere: only the sphere's pairs can come up (shape_pairs.hpp).
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere: return first_touch_spheres(a.position, a0, a.shape.radius, b.position, b0, b.shape.radius);
+        case ShapePair::sphere_box: return first_touch_box(a.position, a0, a.shape.radius, b, b.position, b0);
+        case ShapePair::sphere_plane:
+            return first_touch_plane(a.position, a0, a.shape.radius, b.position, rotate(b.orientation, b.shape.normal));
+        case ShapePair::plane_plane:
+        case ShapePair::plane_box:
+        case ShapePair::box_box: return std::nullopt;  // boxes and planes are not traced
     }
-    return first_touch_plane(a.position, a0, a.shape.radius, b.position, rotate(b.orientation, b.shape.normal));
+    return std::nullopt;
 }
 
 /// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
