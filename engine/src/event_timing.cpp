@@ -490,7 +490,8 @@ private:
 
 }  // namespace
 
-void step_with_event_timing(World& world) {
+void World::step_with_event_timing() {
+    World& world = *this;
     const WorldSettings& settings = world.settings_;
     std::span<RigidBody> bodies = world.bodies_;
     EventScratch& scratch = world.event_scratch_;

@@ -116,7 +116,8 @@ struct EarliestTouch {
 
 }  // namespace
 
-void sweep_fast_spheres(World& world) {
+void World::sweep_fast_spheres() {
+    World& world = *this;
     std::span<RigidBody> bodies = world.bodies_;
     SweepScratch& scratch = world.sweep_scratch_;
     const auto count = static_cast<std::uint32_t>(bodies.size());

@@ -43,7 +43,7 @@ void World::step() {
     // Under event timing the bodies move from impact to impact, each answered at its moment,
     // and what still overlaps at the end is answered as the discrete stages would.
     if (settings_.contact_timing == ContactTiming::event) {
-        step_with_event_timing(*this);
+        step_with_event_timing();
     } else {
         integrate();  // 1. gravity, then positions and orientations
         detect();     // 2. overlapping pairs, and the swept test of fast spheres
@@ -163,7 +163,7 @@ void World::detect() {
     find_contacts(proxies_fresh_);
     proxies_fresh_ = false;
     const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
-    if (swept) sweep_fast_spheres(*this);
+    if (swept) sweep_fast_spheres();
     // Only the spheres the swept test moved back changed here; the guard looks at those (and,
     // on a find, at all, to name the first in body order).
     guard_bodies("detect", swept ? std::span<const std::uint32_t>(sweep_scratch_.moved) : std::span<const std::uint32_t>());

@@ -50,7 +50,7 @@ struct ImpactEvent {
     std::uint32_t events_i, events_j;  ///< the bodies' event counts when it was predicted
 };
 
-/// What step_with_event_timing() keeps between steps, so that a warm step allocates nothing.
+/// What World::step_with_event_timing() keeps between steps, so that a warm step allocates nothing.
 struct EventScratch {
     std::vector<double> since;             ///< per body: the time within the step its state refers to, s
     std::vector<double> reach;             ///< per body: how far it may move this step, m
@@ -73,13 +73,13 @@ struct EventScratch {
     std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
 };
 
-/// One step of `world` with event-accurate timing. After the last event the discrete stages
-/// run once on what still overlaps (deep initial overlaps, resting contacts), so nothing is
-/// left unanswered. A step handles at most a bounded number of events (two per body, and at
-/// most max_events_per_body for any one body), after which the rest of it is discrete: a ball
-/// coming to rest on the ground bounces infinitely often in a finite time, and no event loop
-/// can follow that.
-void step_with_event_timing(World& world);
+// One step of `world` with event-accurate timing. After the last event the discrete stages
+// run once on what still overlaps (deep initial overlaps, resting contacts), so nothing is
+// left unanswered. A step handles at most a bounded number of events (two per body, and at
+// most max_events_per_body for any one body), after which the rest of it is discrete: a ball
+// coming to rest on the ground bounces infinitely often in a finite time, and no event loop
+// can follow that.
+// (World::step_with_event_timing(), run by World::step() under event timing.)
 
 /// The most events one body takes part in within a step; after that its contacts are left to
 /// the discrete back-stop (a resting pile would otherwise spend the whole budget on bounces

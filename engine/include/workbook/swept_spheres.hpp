@@ -53,7 +53,7 @@ inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, c
     return far - approach * approach <= rr * uu + slack * far;
 }
 
-/// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
+/// What World::sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
 struct SweepScratch {
     std::vector<Vector3> starts;         ///< without the grid: where each body started the step
     std::vector<std::uint32_t> moved;    ///< spheres moved back this step, in index order
@@ -63,14 +63,14 @@ struct SweepScratch {
     std::vector<std::uint32_t> boxes;    ///< the boxes, which the swept test's partners leave out
 };
 
-/// After detect(): every sphere that moved further than the smallest radius in the world is
-/// traced from where it started the step to where it ended, in index order; if it went through
-/// another sphere or a box, or its centre ended behind a plane, it goes back to the moment of touching
-/// and its contacts are detected again there, plus that touch unless the partner overlaps it
-/// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
-/// are traced against the part of its path it did travel. With the grid of this step's
-/// detect(), only the candidates the broad phase found are tried, with the same result as
-/// trying every body.
-void sweep_fast_spheres(World& world);
+// After detect(): every sphere that moved further than the smallest radius in the world is
+// traced from where it started the step to where it ended, in index order; if it went through
+// another sphere or a box, or its centre ended behind a plane, it goes back to the moment of touching
+// and its contacts are detected again there, plus that touch unless the partner overlaps it
+// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
+// are traced against the part of its path it did travel. With the grid of this step's
+// detect(), only the candidates the broad phase found are tried, with the same result as
+// trying every body.
+// (World::sweep_fast_spheres(), a private stage of World::detect().)
 
 }  // namespace workbook

@@ -160,8 +160,10 @@ public:
     [[nodiscard]] std::uint64_t steps_taken() const { return steps_; }
 
 private:
-    friend void step_with_event_timing(World& world);  // workbook/event_timing.hpp
-    friend void sweep_fast_spheres(World& world);      // workbook/swept_spheres.hpp
+    /// Under event timing, the whole step (event_timing.cpp; see workbook/event_timing.hpp).
+    void step_with_event_timing();
+    /// Part of detect(): the swept test of fast spheres (swept_spheres.cpp; see workbook/swept_spheres.hpp).
+    void sweep_fast_spheres();
     /// Throws NonFiniteState naming `stage` when check_finite is on and a body is not finite.
     void guard(const char* stage) const;
     /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
