@@ -1,5 +1,5 @@
 #pragma once
-// The 2D gas of elastic discs, the one scene every engine in `./workbook bench speed` runs:
+// The 2D gas, the one scene every engine in `./workbook bench speed` runs:
 // N discs (spheres in z = 0) of radius 0.05 m and mass 1 kg in a square box of side
 // L = 10 sqrt(N / 1000) m with four walls, velocities uniform in [-5, 5] m/s, e = 1, no
 // gravity, time step 1/60 s, started on a grid. Keeping its definition in one place is what

@@ -1,4 +1,4 @@
-// workbook-gas ENGINE N STEPS: runs the 2D gas of elastic discs (gas.hpp) in one engine and prints one CSV line,
+// workbook-gas ENGINE N STEPS: runs the 2D gas (gas.hpp) in one engine and prints one CSV line,
 //   engine,n,steps,ms_per_step,energy_before,energy_after,relative_drift,escaped,peak_kb
 // One process per run, so that each run's peak memory is its own.
 #include <cmath>

@@ -1,4 +1,4 @@
-// Google Benchmark micro benchmarks of each stage of World::step(), on the 2D gas of elastic discs (gas.hpp).
+// Google Benchmark micro benchmarks of each stage of World::step(), on the 2D gas (gas.hpp).
 //   build/dev/bench/workbook-stages [--benchmark_filter=detect]
 // Each stage is timed on its own, repeatedly on one state, which is what the stage costs
 // inside a step (a step's state changes, its size does not).

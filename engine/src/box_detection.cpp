@@ -1,4 +1,5 @@
 #include "workbook/box_detection.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <algorithm>
 #include <array>
@@ -32,7 +33,7 @@ double shadow_radius(const OrientedBox& box, const Vector3& n) {
 double largest_half_extent(const OrientedBox& box) { return std::max({box.half[0], box.half[1], box.half[2]}); }
 
 /// Where a relative tolerance needs a length: near-duplicate points, ties between faces.
-constexpr double relative_tolerance = 1e-9;
+constexpr double relative_tolerance = tolerances::geometric_tie;
 
 /// A possible contact point before at most four are kept.
 struct Candidate {
@@ -221,7 +222,7 @@ void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& 
 /// counts as parallel edges, whose separation the face axes already test. Normalising a
 /// shorter one would turn rounding into a visibly wrong axis: its direction error is about
 /// eps / length, so 1e-6 keeps a wrongly tilted axis below 1e-10 of the box size.
-constexpr double parallel_edges = 1e-6;
+constexpr double parallel_edges = tolerances::parallel_edges;
 
 /// The separating-axis test; false when some axis separates the boxes (or they only touch).
 bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& result) {
@@ -387,6 +388,13 @@ bool collide_with_box(const RigidBody& a, std::uint32_t index_a, const RigidBody
     out.body1 = index_a;
     out.body2 = index_b;
     return true;
+}
+
+Vector3 nearest_point_on_box(const RigidBody& box, const Vector3& centre, const Vector3& point) {
+    const Vector3 local = rotate(conjugate(box.orientation), point - centre);
+    const Vector3& h = box.shape.half_extents;
+    const Vector3 clamped{std::clamp(local.x, -h.x, h.x), std::clamp(local.y, -h.y, h.y), std::clamp(local.z, -h.z, h.z)};
+    return centre + rotate(box.orientation, clamped);
 }
 
 }  // namespace workbook

@@ -1,4 +1,5 @@
 #include "workbook/broad_phase.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         const double scale = std::max({std::abs(lo[0]), std::abs(lo[1]), std::abs(lo[2]), std::abs(hi[0]),
                                        std::abs(hi[1]), std::abs(hi[2])});
         // Travels are lengths of differences of coordinates: a few ulps of them, with room to spare.
-        slack_ = 1e-12 * (scale + largest + wide_travel);
+        slack_ = tolerances::travel_slack * (scale + largest + wide_travel);
     }
     const double reach = 2.0 * small_reach;
     small_reach_ = small_reach;
@@ -131,7 +132,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     // may pair sit in the same or neighbouring cells; coarser when the bodies are spread out,
     // so that the grid never has more than about two cells per body (memory stays linear in N).
     const std::size_t budget = 2 * bounded + 8;
-    double cell = std::max(reach * (1.0 + 1e-6) + 4.0 * slack_, std::numeric_limits<double>::min());
+    double cell = std::max(reach * (1.0 + tolerances::grid_cell_margin) + 4.0 * slack_, std::numeric_limits<double>::min());
     // Where the budget binds, start near the width that meets it (the volume, or area, or
     // length the bodies span over the budget), then widen in small steps: steps of 1.5 left
     // the 2D gas of 1,000 discs with cells 0.34 m wide where 0.23 m fit, twice the pairs to test.
@@ -219,11 +220,11 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
         const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
         const double d2 = dx * dx + dy * dy + dz * dz;
         const double radii = p.radius + q.radius;
-        const double reach = (radii + p.travel + q.travel) * (1.0 + 1e-9) + slack;
+        const double reach = (radii + p.travel + q.travel) * (1.0 + tolerances::may_touch_slack) + slack;
         if (d2 > reach * reach) return;
-        // Conservative by a relative 1e-9, so rounding here never drops a pair the narrow
+        // Conservative by a relative slack, so rounding here never drops a pair the narrow
         // phase would keep.
-        if (d2 <= radii * radii * (1.0 + 1e-9) && (immovable_pairs || p.movable || q.movable)) {
+        if (d2 <= radii * radii * (1.0 + tolerances::conservative_slack) && (immovable_pairs || p.movable || q.movable)) {
             const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
             contact_keys_.push_back(a << 32 | b);
         }
@@ -233,6 +234,10 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
             const std::uint32_t flag = may ? partner_may_touch : 0;
             if (p.fast) sweep_pairs_.push_back({p.index, q.index | flag});
             if (q.fast) sweep_pairs_.push_back({q.index, p.index | flag});
+        } else if (p.fast && !q.sphere) {
+            sweep_pairs_.push_back({p.index, q.index | partner_may_touch});  // a box: the swept test decides
+        } else if (q.fast && !p.sphere) {
+            sweep_pairs_.push_back({q.index, p.index | partner_may_touch});
         }
     };
 
@@ -281,7 +286,8 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     for (const std::uint32_t s : large_) {
         const GridProxy& p = proxies[s];
         const bool p_wide = is_wide(p);
-        const double far = ((p.radius + p.travel + largest_reach_) * (1.0 + 1e-9) + slack) * inverse_cell_ * (1.0 + 1e-9);
+        const double far = ((p.radius + p.travel + largest_reach_) * (1.0 + tolerances::may_touch_slack) + slack) * inverse_cell_ *
+                           (1.0 + tolerances::conservative_slack);
         const std::uint64_t k = far < 1e15 ? static_cast<std::uint64_t>(far) + 1 : std::uint64_t{1} << 50;
         const std::uint64_t cx = axis_cell_of(p.x, 0), cy = axis_cell_of(p.y, 1), cz = axis_cell_of(p.z, 2);
         auto low_end = [k](std::uint64_t c) { return c > k ? c - k : 0; };
@@ -326,8 +332,8 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
         // The height of the centre above the plane, as the narrow phase computes it.
         const Vector3 offset{p.x - u.point.x, p.y - u.point.y, p.z - u.point.z};
         const double height = dot(offset, u.normal);
-        // A relative 1e-9 of slack keeps the test conservative.
-        if ((immovable_pairs || p.movable || u.movable) && height < p.radius + 1e-9 * (p.radius + std::abs(height))) {
+        // A relative slack keeps the test conservative.
+        if ((immovable_pairs || p.movable || u.movable) && height < p.radius + tolerances::conservative_slack * (p.radius + std::abs(height))) {
             const std::uint64_t a = std::min(p.index, u.index), b = std::max(p.index, u.index);
             contact_keys_.push_back(a << 32 | b);
         }
@@ -392,6 +398,44 @@ void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs) {
     for (const BodyPair& p : sweep_pairs_) sweep_partners_[sweep_start_[p.first]++] = p.second;
     for (std::size_t i = count; i > 0; --i) sweep_start_[i] = sweep_start_[i - 1];
     sweep_start_[0] = 0;
+}
+
+void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double radius,
+                             std::vector<std::uint32_t>& out) const {
+    const auto near = [&](const GridProxy& q) {
+        const double within = (radius + q.radius) * (1.0 + tolerances::conservative_slack);
+        const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
+        return dx * dx + dy * dy + dz * dz <= within * within;
+    };
+    for (const PlaneProxy& plane : set.planes)
+        if (dot(centre - plane.point, plane.normal) <= radius * (1.0 + tolerances::conservative_slack)) out.push_back(plane.index);
+    if (!has_grid_) {
+        for (const GridProxy& q : set.proxies)
+            if (!q.plane && near(q)) out.push_back(q.index);
+        return;
+    }
+    // Every proxy in the grid is at most largest_radius_ wide, so one within reach has its
+    // centre within radius + largest_radius_ of `centre`: the cells that far around its cell.
+    const double c[3] = {centre.x, centre.y, centre.z};
+    const double far = (radius + largest_radius_) * (1.0 + tolerances::conservative_slack) * inverse_cell_;
+    const double k = far < 1e15 ? std::floor(far) + 1.0 : 1e15;
+    std::uint64_t from[3], to[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        // The range of cells in doubles first: a centre outside the grid has a negative index.
+        const double at = std::floor((c[axis] - low_[axis]) * inverse_cell_);
+        const double last = static_cast<double>(cells_[axis] - 1);
+        const double lo = std::clamp(at - k, 0.0, last), hi = std::clamp(at + k, 0.0, last);
+        if (!(at + k >= 0.0 && at - k <= last)) return;  // (also for a NaN centre)
+        from[axis] = static_cast<std::uint64_t>(lo);
+        to[axis] = static_cast<std::uint64_t>(hi);
+    }
+    const std::uint64_t nx = cells_[0], ny = cells_[1];
+    for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+        for (std::uint64_t y = from[1]; y <= to[1]; ++y) {
+            const std::uint64_t row = (z * ny + y) * nx;
+            for (std::uint32_t t = cell_start_[row + from[0]]; t < cell_start_[row + to[0] + 1]; ++t)
+                if (near(by_cell_[t])) out.push_back(by_cell_[t].index);
+        }
 }
 
 }  // namespace workbook

@@ -1,4 +1,5 @@
 #include "workbook/detection.hpp"
+#include "workbook/shape_pairs.hpp"
 
 #include <utility>
 
@@ -89,28 +90,37 @@ std::optional<Contact> collide_sphere_plane(const RigidBody& sphere, const Rigid
 }
 
 bool overlaps(const RigidBody& a, const RigidBody& b) {
-    const ShapeKind ka = a.shape.kind;
-    const ShapeKind kb = b.shape.kind;
-    if (ka == ShapeKind::sphere && kb == ShapeKind::sphere) return spheres_overlap(a, b);
-    if (ka == ShapeKind::sphere && kb == ShapeKind::plane) return sphere_plane_overlap(a, b);
-    if (ka == ShapeKind::plane && kb == ShapeKind::sphere) return sphere_plane_overlap(b, a);
-    // A pair with a box is decided in full by the separating-axis test of write_contact()
-    // (box_detection.cpp); here only its bounding spheres, so most far pairs stop cheaply.
-    if (ka == ShapeKind::box || kb == ShapeKind::box) return bounding_spheres_may_touch(a, b);
-    // Plane-plane pairs are two immovable bodies and never need a response.
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere: return spheres_overlap(a, b);
+        case ShapePair::sphere_plane:
+            return a.shape.kind == ShapeKind::sphere ? sphere_plane_overlap(a, b) : sphere_plane_overlap(b, a);
+        // A pair with a box is decided in full by the separating-axis test of write_contact()
+        // (box_detection.cpp); here only its bounding spheres, so most far pairs stop cheaply.
+        case ShapePair::sphere_box:
+        case ShapePair::plane_box:
+        case ShapePair::box_box: return bounding_spheres_may_touch(a, b);
+        // Plane-plane pairs are two immovable bodies and never need a response.
+        case ShapePair::plane_plane: return false;
+    }
     return false;
 }
 
 bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact) {
-    if (a.shape.kind == ShapeKind::box || b.shape.kind == ShapeKind::box)
-        return collide_with_box(a, index_a, b, index_b, contact);
-    if (a.shape.kind == ShapeKind::plane) {
-        write_sphere_plane(b, a, contact);
-        std::swap(index_a, index_b);
-    } else if (b.shape.kind == ShapeKind::plane) {
-        write_sphere_plane(a, b, contact);
-    } else {
-        write_spheres(a, b, contact);
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_box:
+        case ShapePair::plane_box:
+        case ShapePair::box_box: return collide_with_box(a, index_a, b, index_b, contact);
+        case ShapePair::sphere_plane:
+            // The sphere is body 1, so that the normal points from the plane to it.
+            if (a.shape.kind == ShapeKind::plane) {
+                write_sphere_plane(b, a, contact);
+                std::swap(index_a, index_b);
+            } else {
+                write_sphere_plane(a, b, contact);
+            }
+            break;
+        case ShapePair::sphere_sphere: write_spheres(a, b, contact); break;
+        case ShapePair::plane_plane: return false;  // never overlaps()
     }
     contact.body1 = index_a;
     contact.body2 = index_b;

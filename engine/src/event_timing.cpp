@@ -1,22 +1,26 @@
 #include "workbook/event_timing.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
+#include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
+#include "workbook/shape_pairs.hpp"
+#include "workbook/world.hpp"
 
 namespace workbook {
 
 namespace {
 
-/// Gaps within this share of the scene's length scale count as touching: what rounding
-/// leaves after advancing exactly to a time of impact.
-constexpr double touching_tolerance = 1e-12;
+/// Gaps within this share of the scene's length scale count as touching (tolerances.hpp).
+constexpr double touching_tolerance = tolerances::touching;
 
 /// The smallest root in (0, limit] of a t^2 + b t + c with c > 0 (the pair is apart now), or
 /// nothing. The root is taken in the form that does not cancel.
@@ -58,7 +62,8 @@ std::optional<double> sphere_plane(const RigidBody& sphere, const RigidBody& pla
     const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
     const double reach = reach_towards(sphere, normal);
     const double gap = dot(sphere.position - plane.position, normal) - reach;
-    const double rate = dot(sphere.velocity, normal);
+    // A kinematic plane moves at its set velocity (an immovable one has none).
+    const double rate = dot(sphere.velocity - plane.velocity, normal);
     const double curvature = k * dot(gravity, normal);  // gap(t) = gap + rate t + curvature t^2
     const double scale = std::abs(dot(sphere.position - plane.position, normal)) + reach;
     if (std::abs(gap) <= touching_tolerance * scale) {
@@ -137,16 +142,83 @@ std::optional<double> sphere_sphere(const RigidBody& s1, const RigidBody& s2, co
     return std::nullopt;
 }
 
-void advance(std::span<RigidBody> bodies, const Vector3& gravity, double k, double tau) {
+/// Advances one body by tau along the motion of the file comment: a kinematic body at its set
+/// velocity and spin, a movable one under gravity with free rotation (a box whose moments
+/// differ precesses, Euler's equations, which turning it about a fixed w would miss).
+void advance(RigidBody& body, const Vector3& gravity, double k, double tau) {
     if (tau <= 0.0) return;
-    for (RigidBody& body : bodies) {
-        if (body.is_immovable()) continue;
-        body.position += body.velocity * tau + gravity * (k * tau * tau);
-        body.velocity += gravity * tau;
-        // Free rotation as in the discrete step: a box whose moments differ precesses (Euler's
-        // equations), which turning it about a fixed w would miss.
-        if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
+    if (body.is_immovable()) {
+        advance_kinematic(body, tau);
+        return;
     }
+    body.position += body.velocity * tau + gravity * (k * tau * tau);
+    body.velocity += gravity * tau;
+    if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
+}
+
+/// The body as time_of_impact() must see it `s` after the time its state refers to: at its
+/// position then, with the velocity that makes x + v tau + k g tau^2 continue the same curve
+/// (v + 2 k g s; the body's own velocity then is v + g s, equal only for k = 1/2). A body is
+/// advanced in one piece from its state to its next event, so predictions must follow that piece.
+RigidBody seen_after(const RigidBody& body, const Vector3& gravity, double k, double s) {
+    RigidBody seen = body;
+    if (s <= 0.0) return seen;
+    if (body.is_immovable()) {
+        seen.position += body.velocity * s;
+        return seen;
+    }
+    seen.position += body.velocity * s + gravity * (k * s * s);
+    seen.velocity += gravity * (2.0 * k * s);
+    return seen;
+}
+
+/// A sphere against a box that does not spin. The sphere's centre moves relative to the box
+/// along d + u tau + a tau^2, and the gap is its distance from the box less the radius, which
+/// has no closed form: it is sampled at steps of at most half the radius or the box's
+/// thinnest half extent along that path (so that the sphere cannot cross the box between two
+/// samples), and the first sample inside is bisected to rounding. A grazing touch shorter than
+/// a sample step can be missed; the back-stop answers it if it still overlaps at the end.
+std::optional<double> sphere_box(const RigidBody& sphere, const RigidBody& box, const Vector3& gravity, double k,
+                                 double limit) {
+    const Vector3 d = sphere.position - box.position;
+    const Vector3 u = sphere.velocity - box.velocity;
+    const Vector3 a = (acceleration_of(sphere, gravity) - acceleration_of(box, gravity)) * k;
+    const double r = sphere.shape.radius;
+    const auto gap = [&](double tau) {
+        const Vector3 at = box.position + d + u * tau + a * (tau * tau);
+        return length(at - nearest_point_on_box(box, box.position, at)) - r;
+    };
+    const double path = length(u) * limit + length(a) * limit * limit;
+    const double start = gap(0.0);
+    const Vector3& h = box.shape.half_extents;
+    const double scale = length(d) + r + length(h);
+    bool touching = std::abs(start) <= touching_tolerance * scale;
+    if (touching) {
+        const Vector3 nearest = nearest_point_on_box(box, box.position, sphere.position);
+        if (dot(sphere.position - nearest, u) < 0.0) return 0.0;
+    } else if (start < 0.0 || start > path) {
+        return std::nullopt;  // overlapping already (the back-stop's), or too far to reach it
+    }
+    const double step = 0.5 * std::min({r, h.x, h.y, h.z});
+    const double wanted = std::ceil(path / step);
+    const int samples = static_cast<int>(std::clamp(wanted, 1.0, 4096.0));
+    double previous_t = 0.0;
+    for (int n = 1; n <= samples; ++n) {
+        const double t = limit * n / samples;
+        if (gap(t) < 0.0) {
+            double lo = previous_t, hi = t;
+            for (int j = 0; j < 200; ++j) {
+                const double mid = 0.5 * (lo + hi);
+                if (mid == lo || mid == hi) break;
+                (gap(mid) < 0.0 ? hi : lo) = mid;
+            }
+            // Just bounced off (touching, moving away): a touch at the very start is not a new one.
+            if (touching && lo == 0.0) return std::nullopt;
+            return lo;
+        }
+        previous_t = t;
+    }
+    return std::nullopt;
 }
 
 /// The corners of a box touching a plane: those within rounding of the lowest (one, two for an
@@ -173,7 +245,13 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     Contact contact;
     contact.body1 = i1;
     contact.body2 = i2;
-    if (b1.shape.kind == ShapeKind::box) {
+    if (b1.shape.kind == ShapeKind::sphere && b2.shape.kind == ShapeKind::box) {
+        const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
+        const Vector3 offset = b1.position - nearest;
+        const double distance = length(offset);
+        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+        contact.add_point(nearest, 0.0);
+    } else if (b1.shape.kind == ShapeKind::box) {
         contact.normal = rotate(b2.orientation, b2.shape.normal);
         add_touching_corners(b1, b2.position, contact.normal, contact);
     } else if (b2.shape.kind == ShapeKind::plane) {
@@ -188,28 +266,12 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     return contact;
 }
 
-/// Spheres, planes, and boxes that do not spin (whose lowest point follows a parabola) take
-/// part in the event loop; other bodies are left to the discrete back-stop.
+/// Spheres, planes that do not turn, and boxes that do not spin (whose lowest point follows a
+/// parabola) take part in the event loop; other bodies are left to the discrete back-stop.
 bool takes_part(const RigidBody& body) {
-    return body.shape.kind == ShapeKind::sphere || body.shape.kind == ShapeKind::plane ||
+    return body.shape.kind == ShapeKind::sphere ||
+           (body.shape.kind == ShapeKind::plane && body.angular_velocity == Vector3{}) ||
            (body.shape.kind == ShapeKind::box && body.angular_velocity == Vector3{});
-}
-
-/// How far any movable body can get over `limit`, |v| limit + k |g| limit^2 at most: one
-/// number per scan that lets most pairs of spheres be passed over with one squared distance,
-/// as cheap as the discrete loop's overlap test.
-double largest_reach(std::span<const RigidBody> bodies, const Vector3& gravity, double k, double limit) {
-    double fastest_squared = 0.0;
-    for (const RigidBody& body : bodies)
-        if (!body.is_immovable()) fastest_squared = std::max(fastest_squared, length_squared(body.velocity));
-    return std::sqrt(fastest_squared) * limit + std::abs(k) * length(gravity) * limit * limit;
-}
-
-/// False only when spheres a and b are too far apart to touch within the reach of each.
-bool may_meet(const RigidBody& a, const RigidBody& b, double reach) {
-    if (a.shape.kind != ShapeKind::sphere || b.shape.kind != ShapeKind::sphere) return true;
-    const double within = a.shape.radius + b.shape.radius + reach * ((a.is_immovable() ? 0 : 1) + (b.is_immovable() ? 0 : 1));
-    return !(length_squared(a.position - b.position) > within * within);
 }
 
 }  // namespace
@@ -226,100 +288,266 @@ double gravity_position_factor(Integrator integrator) {
 std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, const Vector3& gravity, double k,
                                      double limit) {
     if (a.is_immovable() && b.is_immovable()) return std::nullopt;
-    const ShapeKind ka = a.shape.kind;
-    const ShapeKind kb = b.shape.kind;
-    if (ka == ShapeKind::sphere && kb == ShapeKind::sphere) return sphere_sphere(a, b, gravity, k, limit);
-    if (ka == ShapeKind::sphere && kb == ShapeKind::plane) return sphere_plane(a, b, gravity, k, limit);
-    if (ka == ShapeKind::plane && kb == ShapeKind::sphere) return sphere_plane(b, a, gravity, k, limit);
     // A box that does not spin meets a plane like a sphere whose radius is the box's reach.
-    const auto still_box = [](const RigidBody& body) {
-        return body.shape.kind == ShapeKind::box && body.angular_velocity == Vector3{};
-    };
-    if (still_box(a) && kb == ShapeKind::plane) return sphere_plane(a, b, gravity, k, limit);
-    if (ka == ShapeKind::plane && still_box(b)) return sphere_plane(b, a, gravity, k, limit);
+    const bool a_first = a.shape.kind == ShapeKind::sphere || (a.shape.kind == ShapeKind::box && b.shape.kind == ShapeKind::plane);
+    const RigidBody& first = a_first ? a : b;   // the sphere, or the box against a plane
+    const RigidBody& second = a_first ? b : a;
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere: return sphere_sphere(a, b, gravity, k, limit);
+        case ShapePair::sphere_plane: return sphere_plane(first, second, gravity, k, limit);
+        case ShapePair::sphere_box:
+            return (second.angular_velocity == Vector3{}) ? sphere_box(first, second, gravity, k, limit) : std::nullopt;  // a box that does not spin
+        case ShapePair::plane_box:
+            return (first.angular_velocity == Vector3{}) ? sphere_plane(first, second, gravity, k, limit) : std::nullopt;
+        case ShapePair::plane_plane:
+        case ShapePair::box_box: return std::nullopt;  // never met / left to the back-stop
+    }
     return std::nullopt;
 }
 
-void step_with_event_timing(World& world) {
-    const WorldSettings& settings = world.settings_;
-    const double k = gravity_position_factor(settings.integrator);
-    std::span<RigidBody> bodies = world.bodies_;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    const std::size_t event_budget = std::min<std::size_t>(1024, 8 + 2 * std::size_t{count});
+namespace {
 
-    world.contacts_.clear();
-    world.response_energy_change_ = 0.0;
-    double remaining = settings.time_step;
-    std::size_t events = 0;
-    while (remaining > 0.0 && events < event_budget) {
-        double earliest = remaining;
-        std::uint32_t first = count;
-        std::uint32_t second = count;
-        const double reach = largest_reach(bodies, settings.gravity, k, remaining);
-        for (std::uint32_t i = 0; i < count; ++i) {
-            if (!takes_part(bodies[i])) continue;
-            for (std::uint32_t j = i + 1; j < count; ++j) {
-                if (!takes_part(bodies[j]) || !may_meet(bodies[i], bodies[j], reach)) continue;
-                if (auto t = time_of_impact(bodies[i], bodies[j], settings.gravity, k, earliest)) {
-                    if (first == count || *t < earliest) {
-                        earliest = *t;
-                        first = i;
-                        second = j;
-                    }
-                }
-            }
+/// The heap's order: the earliest event on top, and among equally early ones the smallest
+/// pair (i, then j), the one a scan of every pair in index order would pick.
+bool later(const ImpactEvent& a, const ImpactEvent& b) {
+    if (a.t != b.t) return a.t > b.t;
+    if (a.i != b.i) return a.i > b.i;
+    return a.j > b.j;
+}
+
+/// The event loop of one step over `bodies`; see step_with_event_timing().
+class EventLoop {
+public:
+    EventLoop(std::span<RigidBody> bodies, const WorldSettings& settings, EventScratch& scratch)
+        : bodies_(bodies), scratch_(scratch), gravity_(settings.gravity), k_(gravity_position_factor(settings.integrator)),
+          dt_(settings.time_step), count_(static_cast<std::uint32_t>(bodies.size())) {}
+
+    /// Finds the candidate pairs of the step and their first impacts.
+    void start() {
+        EventScratch& s = scratch_;
+        s.since.assign(count_, 0.0);
+        s.events.assign(count_, 0);
+        s.reach.assign(count_, 0.0);
+        s.extra.clear();
+        s.extra_head.assign(count_, no_extra);
+        s.extra_nodes.clear();
+        s.heap.clear();
+        s.contacts.clear();
+        // Each body's bounding sphere widened by how far it can move this step at the velocity
+        // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
+        // body that an impact sends further is searched again (outran()).
+        s.proxies.clear(count_);
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            s.reach[i] = can_move(bodies_[i], dt_);
+            s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
-        advance(bodies, settings.gravity, k, earliest);
-        world.guard("event: advance");
-        remaining -= earliest;
-        if (first == count) {
-            remaining = 0.0;
-            break;
+        s.broad_phase.find_pairs(s.proxies, s.pairs);
+        // A kinematic plane that moves or turns can meet any body: each is its candidate.
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
+            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
+                continue;
+            for (std::uint32_t j = 0; j < count_; ++j)
+                if (j != i) add_extra(i, j);
         }
-        // Body 2 of a pair with a plane is the plane, as everywhere else.
-        if (bodies[first].shape.kind == ShapeKind::plane) std::swap(first, second);
-        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-        if (world.model_.respond != nullptr) {
-            const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
-            world.model_.respond(bodies[first], bodies[second], contact);
-            world.response_energy_change_ += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+        // Each body's candidates, as lists by body (a counting sort of the pairs).
+        s.start.assign(count_ + 1, 0);
+        for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
+        for (std::uint32_t i = 0; i < count_; ++i) s.start[i + 1] += s.start[i];
+        s.partners.resize(s.start[count_]);
+        for (const BodyPair& p : s.pairs) {
+            s.partners[s.start[p.first]++] = p.second;
+            s.partners[s.start[p.second]++] = p.first;
         }
-        // Kept for the probes (how many contacts this step answered). The world reserves room for
-        // every pair; only a step with more events than pairs, which the event budget allows,
-        // can make this grow.
-        world.contacts_.push_back(contact);
-        world.guard("event: respond");
-        ++events;
-        // Without a responder nothing changes at an impact, and the same pair would be found
-        // again at once; let the bodies pass as the discrete loop would.
-        if (world.model_.respond == nullptr) {
-            advance(bodies, settings.gravity, k, remaining);
-            remaining = 0.0;
-        }
+        for (std::uint32_t i = count_; i > 0; --i) s.start[i] = s.start[i - 1];
+        s.start[0] = 0;
+        for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
+        for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
     }
-    if (remaining > 0.0) advance(bodies, settings.gravity, k, remaining);  // the event budget ran out
 
-    // The discrete back-stop: whatever still overlaps beyond rounding.
-    const std::size_t first_overlap = world.contacts_.size();
-    for (std::uint32_t i = 0; i < count; ++i)
-        for (std::uint32_t j = i + 1; j < count; ++j) {
-            if (bodies[i].is_immovable() && bodies[j].is_immovable()) continue;
-            if (auto contact = collide(bodies[i], i, bodies[j], j)) world.contacts_.push_back(*contact);
+    /// The earliest pending event that still holds, or nothing.
+    std::optional<ImpactEvent> next() {
+        EventScratch& s = scratch_;
+        while (!s.heap.empty()) {
+            std::pop_heap(s.heap.begin(), s.heap.end(), later);
+            const ImpactEvent e = s.heap.back();
+            s.heap.pop_back();
+            if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
         }
-    const std::span<const Contact> overlaps = std::span<const Contact>(world.contacts_).subspan(first_overlap);
-    if (world.model_.respond != nullptr)
-        for (const Contact& contact : overlaps) {
-            RigidBody& b1 = bodies[contact.body1];
-            RigidBody& b2 = bodies[contact.body2];
-            const double before = kinetic_energy(b1) + kinetic_energy(b2);
-            world.model_.respond(b1, b2, contact);
-            world.response_energy_change_ += kinetic_energy(b1) + kinetic_energy(b2) - before;
+        return std::nullopt;
+    }
+
+    /// Advances body i to time t within the step.
+    void advance_to(std::uint32_t i, double t) {
+        advance(bodies_[i], gravity_, k_, t - scratch_.since[i]);
+        scratch_.since[i] = t;
+    }
+
+    /// After an event at time t: body i's impacts are predicted again with each candidate.
+    void changed(std::uint32_t i, double t) {
+        EventScratch& s = scratch_;
+        ++s.events[i];
+        if (outran(i, t)) search_again(i, t);
+        if (s.events[i] >= max_events_per_body || !takes_part(bodies_[i])) return;
+        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) predict(i, s.partners[n], t);
+        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
+    }
+
+    /// Every pair that may overlap at the end of the step, each once, sorted by (first, second):
+    /// the candidates, which hold every pair whose bodies came near each other.
+    std::span<const BodyPair> pairs_to_check() {
+        EventScratch& s = scratch_;
+        if (s.extra.empty()) return s.pairs;
+        s.all_pairs.assign(s.pairs.begin(), s.pairs.end());
+        s.all_pairs.insert(s.all_pairs.end(), s.extra.begin(), s.extra.end());
+        const auto order = [](const BodyPair& a, const BodyPair& b) {
+            return a.first != b.first ? a.first < b.first : a.second < b.second;
+        };
+        std::sort(s.all_pairs.begin(), s.all_pairs.end(), order);
+        const auto same = [](const BodyPair& a, const BodyPair& b) { return a.first == b.first && a.second == b.second; };
+        s.all_pairs.erase(std::unique(s.all_pairs.begin(), s.all_pairs.end(), same), s.all_pairs.end());
+        return s.all_pairs;
+    }
+
+private:
+    static constexpr std::uint32_t no_extra = std::numeric_limits<std::uint32_t>::max();
+
+    /// How far `body` may move in `left` seconds from the state it has, m: |v| left, plus for
+    /// a movable body what gravity adds, (|k| + 1) |g| left^2, which also covers the motion
+    /// being split into pieces at its events (each piece starts with the velocity gravity gave).
+    [[nodiscard]] double can_move(const RigidBody& body, double left) const {
+        const double speed_part = length(body.velocity) * left;
+        return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+    }
+
+    /// Records bodies a and b as candidates found after the broad phase.
+    void add_extra(std::uint32_t a, std::uint32_t b) {
+        EventScratch& s = scratch_;
+        s.extra.push_back({std::min(a, b), std::max(a, b)});
+        s.extra_nodes.push_back({b, s.extra_head[a]});
+        s.extra_head[a] = static_cast<std::uint32_t>(s.extra_nodes.size() - 1);
+        s.extra_nodes.push_back({a, s.extra_head[b]});
+        s.extra_head[b] = static_cast<std::uint32_t>(s.extra_nodes.size() - 1);
+    }
+
+    /// Pushes the first impact of bodies a and b after time t, if any within the step.
+    void predict(std::uint32_t a, std::uint32_t b, double t) {
+        EventScratch& s = scratch_;
+        const RigidBody& body_a = bodies_[a];
+        const RigidBody& body_b = bodies_[b];
+        if (!takes_part(body_a) || !takes_part(body_b) || (body_a.is_immovable() && body_b.is_immovable())) return;
+        if (s.events[a] >= max_events_per_body || s.events[b] >= max_events_per_body) return;
+        // Most candidates cannot meet at the speeds they now have: their stored centres are
+        // further apart than both can move in what is left of the step (one comparison, as
+        // cheap as the discrete loop's overlap test).
+        if (body_a.shape.kind != ShapeKind::plane && body_b.shape.kind != ShapeKind::plane) {
+            const double within = bounding_radius(body_a) + bounding_radius(body_b) + can_move(body_a, dt_ - s.since[a]) +
+                                  can_move(body_b, dt_ - s.since[b]);
+            if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
         }
-    world.guard("respond");
-    if (world.model_.correct != nullptr)
-        for (const Contact& contact : overlaps)
-            world.model_.correct(bodies[contact.body1], bodies[contact.body2], contact, settings.position_correction);
-    world.guard("correct");
+        // Each as time_of_impact() must see it at t (a copy only for a body whose state is older).
+        const auto tau = t == s.since[a] && t == s.since[b]
+                             ? time_of_impact(body_a, body_b, gravity_, k_, dt_ - t)
+                             : time_of_impact(seen_after(body_a, gravity_, k_, t - s.since[a]),
+                                              seen_after(body_b, gravity_, k_, t - s.since[b]), gravity_, k_, dt_ - t);
+        if (!tau) return;
+        const std::uint32_t i = std::min(a, b), j = std::max(a, b);
+        s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
+        std::push_heap(s.heap.begin(), s.heap.end(), later);
+    }
+
+    /// How far body i, as it now moves, may get from where it started the step by the end.
+    [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
+        const GridProxy& p = scratch_.proxies.proxies[i];
+        return length(bodies_[i].position - Vector3{p.x, p.y, p.z}) + can_move(bodies_[i], dt_ - t);
+    }
+
+    /// True when body i may leave the widened sphere its candidates were found for.
+    [[nodiscard]] bool outran(std::uint32_t i, double t) const {
+        return !bodies_[i].is_immovable() && needs_reach(i, t) > scratch_.reach[i];
+    }
+
+    /// Widens body i's reach to what it now needs, twice over (so that a body sped up again
+    /// and again is searched a few times, not at every event), and adds as candidates the
+    /// bodies whose widened spheres its new one meets, from the cells near it.
+    void search_again(std::uint32_t i, double t) {
+        EventScratch& s = scratch_;
+        s.reach[i] = 2.0 * needs_reach(i, t);
+        const GridProxy& p = s.proxies.proxies[i];
+        s.near.clear();
+        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, bounding_radius(bodies_[i]) + s.reach[i], s.near);
+        for (const std::uint32_t j : s.near)
+            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_extra(i, j);
+    }
+
+    std::span<RigidBody> bodies_;
+    EventScratch& scratch_;
+    Vector3 gravity_;
+    double k_;
+    double dt_;
+    std::uint32_t count_;
+};
+
+}  // namespace
+
+void World::step_with_event_timing() {
+    World& world = *this;
+    const WorldSettings& settings = world.settings_;
+    std::span<RigidBody> bodies = world.bodies_;
+    EventScratch& scratch = world.event_scratch_;
+    const auto count = static_cast<std::uint32_t>(bodies.size());
+    const ResponseModel& model = world.model_;
+
+    // Without a responder nothing changes at an impact: the bodies pass as the discrete loop
+    // would, so there are no events to follow.
+    double energy_change = 0.0;
+    EventLoop loop(bodies, settings, scratch);
+    if (model.respond == nullptr) {
+        scratch.since.assign(count, 0.0);
+        for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
+        world.guard("event: advance");
+        world.find_contacts(false);
+        if (!(world.correct_contacts() == 0.0)) world.guard("correct");
+        world.response_energy_change_ = 0.0;
+        return;
+    }
+    loop.start();
+    const std::size_t event_budget = 8 + 2 * std::size_t{count};
+    for (std::size_t events = 0; events < event_budget; ++events) {
+        const std::optional<ImpactEvent> event = loop.next();
+        if (!event) break;
+        std::uint32_t first = event->i, second = event->j;
+        loop.advance_to(first, event->t);
+        loop.advance_to(second, event->t);
+        // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
+        if (bodies[first].shape.kind == ShapeKind::plane ||
+            (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
+            std::swap(first, second);
+        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
+        const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+        model.respond(bodies[first], bodies[second], contact);
+        energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+        scratch.contacts.push_back(contact);
+        const std::uint32_t changed[] = {first, second};
+        world.guard_bodies("event: respond", changed);
+        loop.changed(first, event->t);
+        loop.changed(second, event->t);
+    }
+    // Every body to the end of the step, each from the time its state refers to.
+    for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
+    world.guard("event: advance");
+
+    // The discrete back-stop: whatever still overlaps beyond rounding (deep initial overlaps,
+    // resting contacts, pairs left out of the event loop), in index order as detect() would
+    // find them, among the candidates, then the world's own response and correction.
+    world.contacts_.clear();
+    world.used_broad_phase_ = scratch.broad_phase.has_grid();
+    for (const auto [i, j] : loop.pairs_to_check()) world.add_contact_if_any(i, j);
+    if (!(world.respond_contacts() == 0.0)) world.guard("respond");
+    if (!(world.correct_contacts() == 0.0)) world.guard("correct");
+    world.response_energy_change_ += energy_change;
+    // The contacts answered at their moment come first, in the order they were answered.
+    world.contacts_.insert(world.contacts_.begin(), scratch.contacts.begin(), scratch.contacts.end());
 }
 
 }  // namespace workbook

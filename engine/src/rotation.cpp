@@ -29,10 +29,6 @@ Matrix3 right_jacobian_of_inverse(const Vector3& theta) {
     return Matrix3::identity() + k * first + k * k * second;
 }
 
-bool is_isotropic(const Matrix3& inertia) {
-    const double i = inertia(0, 0);
-    return inertia == Matrix3::diagonal({i, i, i});
-}
 
 /// The rotation by the body-frame rotation vector `angle_vector` (axis times angle, rad).
 Quaternion rotation_by(const Vector3& angle_vector) {
@@ -59,13 +55,10 @@ Quaternion rotation_by(const Vector3& angle_vector) {
 // The explicit splittings (Dullweber, Reich and Leimkuhler; Buss) also keep L exact but let
 // the energy oscillate by O(dt^2); near the tennis-racket separatrix that error moves the
 // body onto another orbit, which is exactly what the figure must not show.
-int advance_free_rotation(RigidBody& body, double dt) {
-    if (body.angular_velocity == Vector3{} || dt == 0.0) return 0;
-    if (is_isotropic(body.inertia_body)) {
-        body.orientation = integrate(body.orientation, body.angular_velocity, dt);
-        body.update_world_inertia();
-        return 0;
-    }
+namespace {
+
+/// One step of the method above, for a turn small enough that Newton's method converges.
+int turn_freely(RigidBody& body, double dt) {
     const Matrix3 inverse_inertia_body = inverse(body.inertia_body);
     const Quaternion q = body.orientation;
     const Vector3 momentum_world = body.inertia_world() * body.angular_velocity;
@@ -107,6 +100,45 @@ int advance_free_rotation(RigidBody& body, double dt) {
     const Matrix3 inertia_world = body.inertia_world();
     body.angular_velocity = body.inverse_inertia_world * momentum_world;
     body.angular_velocity += body.inverse_inertia_world * (momentum_world - inertia_world * body.angular_velocity);
+    return iterations;
+}
+
+}  // namespace
+
+bool is_isotropic(const Matrix3& inertia) {
+    const double i = inertia(0, 0);
+    return inertia == Matrix3::diagonal({i, i, i});
+}
+
+double largest_spin(const RigidBody& body) {
+    // |w|^2 I_min <= w . I w = 2 E, and 1 / I_min <= |I^-1|_F (the Frobenius norm bounds the
+    // largest eigenvalue of I^-1), so |w| <= sqrt(2 E |I^-1|_F) wherever the spin wanders.
+    double norm_squared = 0.0;
+    for (const double e : inverse(body.inertia_body).m) norm_squared += e * e;
+    const double twice_energy = dot(body.angular_velocity, body.inertia_world() * body.angular_velocity);
+    return std::sqrt(twice_energy * std::sqrt(norm_squared));
+}
+
+int advance_free_rotation(RigidBody& body, double dt) {
+    if (body.angular_velocity == Vector3{} || dt == 0.0) return 0;
+    if (is_isotropic(body.inertia_body)) {
+        body.orientation = integrate(body.orientation, body.angular_velocity, dt);
+        body.update_world_inertia();
+        return 0;
+    }
+    // Newton's method converges from the explicit guess while the body turns by less than
+    // about 3 rad in a step (measured: a box on a skew axis gained 29 % of its energy at
+    // 4 rad a step before sub-steps). A faster spin is followed in equal sub-steps of at most
+    // max_turn_per_substep each, judged by the spin now; each sub-step keeps the energy, so
+    // the step does too.
+    const double turn = length(body.angular_velocity) * std::abs(dt);
+    int substeps = 1;
+    if (turn > max_turn_per_substep)
+        substeps = static_cast<int>(std::min(std::ceil(turn / max_turn_per_substep), double{max_substeps}));
+    if (substeps == 1) return turn_freely(body, dt);
+    int iterations = 0;
+    const double h = dt / substeps;
+    for (int k = 0; k < substeps; ++k) iterations += turn_freely(body, h);
     return iterations;
 }
 

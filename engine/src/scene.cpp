@@ -1,14 +1,17 @@
 #include "workbook/scene.hpp"
+#include "workbook/tolerances.hpp"
 
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <unordered_set>
 #include <initializer_list>
 #include <numbers>
 #include <sstream>
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "workbook/rotation.hpp"
 #include "workbook/scene_limits.hpp"
 
 namespace workbook {
@@ -102,15 +105,31 @@ public:
 
     [[nodiscard]] Vector3 as_vector(const json& v, const std::string& field_path) const {
         if (!v.is_array() || v.size() != 3)
-            fail(field_path, "must be an array of three numbers [x, y, z], got " + v.dump());
+            fail(field_path, "must be an array of three numbers [x, y, z], got " + describe(v));
         return {as_number(v[0], field_path + "[0]"), as_number(v[1], field_path + "[1]"),
                 as_number(v[2], field_path + "[2]")};
     }
 
     static std::string type_name(const json& v) {
         if (v.is_number()) return "the number " + v.dump();
-        if (v.is_string()) return "the string " + v.dump();
+        if (v.is_string()) return "the string " + shortened(v.dump());
         return std::string(v.type_name());
+    }
+
+    /// A value as an error message shows it: short arrays of plain values as written, anything
+    /// else by its type and size, so that the message stays one short line whatever the file
+    /// holds (never a dump of a whole nested value).
+    static std::string describe(const json& v) {
+        if (!v.is_array()) return v.is_object() ? "an object of " + std::to_string(v.size()) + " keys" : type_name(v);
+        bool plain = v.size() <= 8;
+        for (const json& element : v) plain = plain && element.is_primitive();
+        if (plain) return shortened(v.dump());
+        return "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " element" : " elements");
+    }
+
+    /// At most 60 characters of `text`, with "..." when cut.
+    static std::string shortened(const std::string& text) {
+        return text.size() <= 60 ? text : text.substr(0, 57) + "...";
     }
 
     static std::string format(double v) {
@@ -125,26 +144,85 @@ private:
     const std::string& file_;
 };
 
-/// Follows the parser through the document as a JSON path ("bodies[1].position[0]"). A
-/// number too large for a double (1e999) is rejected by nlohmann while parsing, before any
-/// Reader sees it; this is how that error can still name its field.
-class ParsePath {
+/// The first pass over the text, before any document is built (nlohmann's SAX interface):
+/// it follows the parser as a JSON path ("bodies[1].position[0]") so that every problem it
+/// finds can name its field, and refuses what the document must never hold:
+///  - nesting deeper than max_depth (a scene nests 5 levels; a value nested 100,000 deep once
+///    overflowed the stack of whatever walked it recursively);
+///  - a key given twice in one object (a JSON parser keeps one of them silently);
+///  - a number too large for a double (1e999);
+///  - more bodies than the limit, counted here, before a document of them is built.
+/// It keeps only the path and each open object's keys, so it is linear in the text (a
+/// parse callback, which nlohmann calls with the value built so far, was quadratic in the
+/// number of bodies: a 300,000-body file took up to a minute to be refused).
+class FirstPass {
 public:
-    bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-        switch (event) {
-            case json::parse_event_t::object_start: levels_.push_back({false, 0, {}}); break;
-            case json::parse_event_t::array_start: levels_.push_back({true, 0, {}}); break;
-            case json::parse_event_t::key: levels_.back().key = parsed.get<std::string>(); break;
-            case json::parse_event_t::object_end:
-            case json::parse_event_t::array_end:
-                levels_.pop_back();
-                next_element();
-                break;
-            case json::parse_event_t::value: next_element(); break;
-        }
+    using string_t = json::string_t;
+
+    /// The deepest nesting a scene may have; a real one needs 5 (root, bodies, body, shape, vector).
+    static constexpr std::size_t max_depth = 32;
+
+    bool null() { return value(); }
+    bool boolean(bool) { return value(); }
+    bool number_integer(json::number_integer_t) { return value(); }
+    bool number_unsigned(json::number_unsigned_t) { return value(); }
+    bool number_float(json::number_float_t, const string_t&) { return value(); }
+    bool string(string_t&) { return value(); }
+    bool binary(json::binary_t&) { return value(); }
+    bool start_object(std::size_t) { return open(false); }
+    bool start_array(std::size_t) { return open(true); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+    bool key(string_t& name) {
+        Level& level = levels_.back();
+        level.key = name;
+        if (!level.keys.insert(name).second) return refuse(path(), "the key \"" + name + "\" is given twice in one object");
         return true;
     }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) {
+        // nlohmann reports a number too large for a double (406) as a parse error of its own.
+        if (error.id == 406) return refuse(path(), "must be a finite number, got a value too large for a double");
+        return refuse("", std::string("not valid JSON: ") + error.what());
+    }
 
+    [[nodiscard]] bool refused() const { return refused_; }
+    [[nodiscard]] const std::string& field() const { return field_; }
+    [[nodiscard]] const std::string& problem() const { return problem_; }
+    /// The length of the root's "bodies" array when it is one.
+    [[nodiscard]] std::size_t bodies() const { return bodies_; }
+
+private:
+    struct Level {
+        bool in_array = false;
+        std::size_t index = 0;
+        std::string key;
+        std::unordered_set<std::string> keys;  ///< an object's keys so far
+    };
+
+    bool open(bool array) {
+        if (levels_.size() >= max_depth)
+            return refuse(path(), "nested more than " + std::to_string(max_depth) +
+                                      " levels deep (a scene needs 5: root, bodies, body, shape, vector)");
+        levels_.push_back({array, 0, {}, {}});
+        return true;
+    }
+    bool close() {
+        // The root's "bodies" array: count its elements as it closes.
+        if (levels_.size() == 2 && levels_.back().in_array && !levels_.front().in_array && levels_.front().key == "bodies")
+            bodies_ = levels_.back().index;
+        levels_.pop_back();
+        return value();
+    }
+    bool value() {
+        if (!levels_.empty() && levels_.back().in_array) ++levels_.back().index;
+        return true;
+    }
+    bool refuse(std::string field, std::string problem) {
+        refused_ = true;
+        field_ = std::move(field);
+        problem_ = std::move(problem);
+        return false;
+    }
     [[nodiscard]] std::string path() const {
         std::string path;
         for (const Level& level : levels_) {
@@ -154,18 +232,11 @@ public:
         return path;
     }
 
-private:
-    struct Level {
-        bool in_array;
-        std::size_t index;
-        std::string key;
-    };
-
-    void next_element() {
-        if (!levels_.empty() && levels_.back().in_array) ++levels_.back().index;
-    }
-
     std::vector<Level> levels_;
+    bool refused_ = false;
+    std::string field_;
+    std::string problem_;
+    std::size_t bodies_ = 0;
 };
 
 Shape read_shape(const Reader& body, const std::string& path, const std::string& file) {
@@ -193,9 +264,8 @@ Shape read_shape(const Reader& body, const std::string& path, const std::string&
     shape.fail(shape.field("type"), "unknown shape type \"" + type + "\" (supported: sphere, plane, box)");
 }
 
-/// How far a scene's quaternion may stray from unit length: a hand-typed quaternion with
-/// six or more correct digits is accepted (and normalised), a wrong one is refused.
-constexpr double quaternion_length_tolerance = 1e-6;
+/// How far a scene's quaternion may stray from unit length (tolerances.hpp).
+constexpr double quaternion_length_tolerance = tolerances::quaternion_length;
 
 /// The body's orientation: {"axis": [x, y, z], "angle_degrees": a} or {"quaternion": [w, x, y, z]}.
 Quaternion read_orientation(const Reader& body, const std::string& file) {
@@ -208,7 +278,7 @@ Quaternion read_orientation(const Reader& body, const std::string& file) {
         const std::string field = orientation.field("quaternion");
         const auto& value = orientation.required("quaternion");
         if (!value.is_array() || value.size() != 4)
-            orientation.fail(field, "must be an array of four numbers [w, x, y, z], got " + value.dump());
+            orientation.fail(field, "must be an array of four numbers [w, x, y, z], got " + Reader::describe(value));
         const Quaternion q{orientation.as_number(value[0], field + "[0]"), orientation.as_number(value[1], field + "[1]"),
                            orientation.as_number(value[2], field + "[2]"), orientation.as_number(value[3], field + "[3]")};
         const double n = norm(q);
@@ -326,6 +396,9 @@ ContactTiming read_contact_timing(const Reader& root) {
 /// Refuses a scene that would need absurd work or memory, or overflow (workbook/scene_limits.hpp).
 void check_limits(const Reader& root, const Scene& scene) {
     const SceneLimits& limits = scene_limits;
+    if (!(scene.settings.time_step <= limits.max_time_step))
+        root.fail("time_step", "must be at most " + Reader::format(limits.max_time_step) + " s, got " +
+                                   Reader::format(scene.settings.time_step));
     const double steps = scene.duration / scene.settings.time_step;
     if (!(steps <= limits.max_steps))
         root.fail("duration", "needs " + Reader::format(steps) + " steps of " + Reader::format(scene.settings.time_step) +
@@ -355,21 +428,39 @@ void check_limits(const Reader& root, const Scene& scene) {
             root.fail(path + ".shape.radius", "must lie in [" + Reader::format(limits.min_radius) + ", " +
                                                   Reader::format(limits.max_radius) + "] m, got " +
                                                   Reader::format(body.shape.radius));
+        if (body.shape.kind == ShapeKind::box) {
+            const Vector3& h = body.shape.half_extents;
+            const double components[] = {h.x, h.y, h.z};
+            for (int k = 0; k < 3; ++k)
+                if (!(components[k] >= limits.min_half_extent && components[k] <= limits.max_half_extent))
+                    root.fail(path + ".shape.half_extents[" + std::to_string(k) + "]",
+                              "must lie in [" + Reader::format(limits.min_half_extent) + ", " +
+                                  Reader::format(limits.max_half_extent) + "] m, got " + Reader::format(components[k]));
+        }
+        // A free body with unequal moments: how far it may turn in a step (workbook/rotation.hpp).
+        if (!body.is_immovable() && body.angular_velocity != Vector3{} && !is_isotropic(body.inertia_body)) {
+            const double turn = largest_spin(body) * scene.settings.time_step;
+            if (!(turn <= limits.max_turn_per_step))
+                root.fail(path + ".angular_velocity",
+                          "body \"" + scene.body_names[i] + "\" may spin at up to " + Reader::format(largest_spin(body)) +
+                              " rad/s, " + Reader::format(turn) + " rad per time step; the rotation step follows at most " +
+                              Reader::format(limits.max_turn_per_step) + " rad per step (take a smaller time_step)");
+        }
     }
 }
 
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, const std::string& source, std::span<const std::string_view> known_responders) {
-    json document;
-    ParsePath parse_path;
-    try {
-        document = json::parse(json_text, std::ref(parse_path));
-    } catch (const json::parse_error& error) {
-        throw SceneError(source, "", std::string("not valid JSON: ") + error.what());
-    } catch (const json::out_of_range&) {
-        throw SceneError(source, parse_path.path(), "must be a finite number, got a value too large for a double");
-    }
+    FirstPass first;
+    (void)json::sax_parse(json_text, &first);
+    if (first.refused()) throw SceneError(source, first.field(), first.problem());
+    // Counted before any body is read or built, so that a huge array is refused at once.
+    if (first.bodies() > scene_limits.max_bodies)
+        throw SceneError(source, "bodies", std::to_string(first.bodies()) + " bodies are over the limit of " +
+                                               std::to_string(scene_limits.max_bodies));
+    // The first pass accepted the text, so this parse succeeds, without a callback (linear).
+    const json document = json::parse(json_text);
 
     const Reader root(document, "", source);
     root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "integrator",

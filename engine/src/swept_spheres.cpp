@@ -5,8 +5,10 @@
 #include <limits>
 #include <optional>
 
+#include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
 #include "workbook/event_timing.hpp"
+#include "workbook/shape_pairs.hpp"
 #include "workbook/world.hpp"
 
 namespace workbook {
@@ -48,12 +50,55 @@ std::optional<double> first_touch_spheres(const Vector3& a1, const Vector3& a0, 
     return s < 1.0 ? std::optional<double>(s) : std::nullopt;
 }
 
+/// The same for a sphere (start a0, end a1, radius ra) and a box (start b0, end b1, turned as
+/// it is at the end). The sphere's centre moves along a straight line relative to the box, and
+/// its distance from a convex body along a line is a convex function of s: its least value is
+/// found by golden-section search, and the first touch before it by bisection, both to
+/// rounding. As for two spheres, only a pair apart at both ends that came within touching
+/// distance on the way has tunnelled.
+std::optional<double> first_touch_box(const Vector3& a1, const Vector3& a0, double ra, const RigidBody& box,
+                                      const Vector3& b1, const Vector3& b0) {
+    const Vector3 d = a0 - b0;
+    const Vector3 u = (a1 - a0) - (b1 - b0);
+    // The distance from the box at fraction s of the path, with the box held at its end position.
+    const auto distance = [&](double s) {
+        const Vector3 centre = b1 + d + u * s;
+        return length(centre - nearest_point_on_box(box, b1, centre));
+    };
+    if (!(distance(0.0) >= ra) || !(distance(1.0) >= ra)) return std::nullopt;
+    constexpr double golden = 0.6180339887498949;
+    double lo = 0.0, hi = 1.0;
+    for (int n = 0; n < 200 && hi - lo > 1e-15; ++n) {
+        const double m1 = hi - golden * (hi - lo), m2 = lo + golden * (hi - lo);
+        if (distance(m1) < distance(m2)) hi = m2;
+        else lo = m1;
+    }
+    const double nearest = 0.5 * (lo + hi);
+    if (!(distance(nearest) < ra)) return std::nullopt;
+    // distance(0) >= ra > distance(nearest): the first touch lies between.
+    lo = 0.0;
+    hi = nearest;
+    for (int n = 0; n < 200; ++n) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        (distance(mid) < ra ? hi : lo) = mid;
+    }
+    return lo;
+}
+
 /// The touch of fast sphere `a` (start a0) with body `b` (start b0), or nothing.
 std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const RigidBody& b, const Vector3& b0) {
-    if (b.shape.kind == ShapeKind::plane)
-        return first_touch_plane(a.position, a0, a.shape.radius, b.position, rotate(b.orientation, b.shape.normal));
-    if (b.shape.kind != ShapeKind::sphere) return std::nullopt;
-    return first_touch_spheres(a.position, a0, a.shape.radius, b.position, b0, b.shape.radius);
+    // `a` is a sphere: only the sphere's pairs can come up (shape_pairs.hpp).
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere: return first_touch_spheres(a.position, a0, a.shape.radius, b.position, b0, b.shape.radius);
+        case ShapePair::sphere_box: return first_touch_box(a.position, a0, a.shape.radius, b, b.position, b0);
+        case ShapePair::sphere_plane:
+            return first_touch_plane(a.position, a0, a.shape.radius, b.position, rotate(b.orientation, b.shape.normal));
+        case ShapePair::plane_plane:
+        case ShapePair::plane_box:
+        case ShapePair::box_box: return std::nullopt;  // boxes and planes are not traced
+    }
+    return std::nullopt;
 }
 
 /// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
@@ -71,7 +116,8 @@ struct EarliestTouch {
 
 }  // namespace
 
-void sweep_fast_spheres(World& world) {
+void World::sweep_fast_spheres() {
+    World& world = *this;
     std::span<RigidBody> bodies = world.bodies_;
     SweepScratch& scratch = world.sweep_scratch_;
     const auto count = static_cast<std::uint32_t>(bodies.size());
@@ -138,6 +184,10 @@ void sweep_fast_spheres(World& world) {
                 }
                 const Vector3 other_end{q.x, q.y, q.z};
                 const Vector3& other_start = q.start;
+                if (!q.sphere) {
+                    touch.offer(first_touch_box(end, fast_start, p->radius, bodies[j], other_end, other_start), j);
+                    continue;
+                }
                 if (!moved || spheres_may_touch(end, fast_start, p->radius, other_end, other_start, q.radius))
                     touch.offer(first_touch_spheres(end, fast_start, p->radius, other_end, other_start, q.radius), j);
             }
@@ -173,6 +223,10 @@ void sweep_fast_spheres(World& world) {
         contact.body2 = touch.partner;
         if (plane) {
             contact.normal = rotate(other.orientation, other.shape.normal);
+        } else if (other.shape.kind == ShapeKind::box) {
+            const Vector3 offset = fast.position - nearest_point_on_box(other, other_then, fast.position);
+            const double distance = length(offset);
+            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
         } else {
             const Vector3 offset = fast.position - other_then;
             const double distance = length(offset);

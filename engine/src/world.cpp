@@ -40,23 +40,15 @@ World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseMode
 }
 
 void World::step() {
+    // Under event timing the bodies move from impact to impact, each answered at its moment,
+    // and what still overlaps at the end is answered as the discrete stages would.
     if (settings_.contact_timing == ContactTiming::event) {
-        step_with_event_timing(*this);
+        step_with_event_timing();
     } else {
-        // One pass over the bodies moves them, checks they are finite and copies what the
-        // broad phase reads into its proxies: at N = 100,000 the bodies (328 bytes each) do not
-        // fit in any cache, and each separate pass over them cost as much as the grid.
-        const bool swept = settings_.swept_spheres;
-        const bool grid = uses_grid();
-        const double poison = integrate_bodies(grid, swept);
-        if (!(poison == 0.0)) guard("integrate");
-        find_contacts(grid);
-        if (swept) sweep_fast_spheres(*this);
-        // Later stages change only some bodies, all others were finite after integrate: the
-        // guards look at those (and, on a find, at all, to name the first in body order).
-        guard_bodies("detect", swept ? std::span<const std::uint32_t>(sweep_scratch_.moved) : std::span<const std::uint32_t>());
-        if (!(respond_contacts() == 0.0)) guard("respond");
-        if (!(correct_contacts() == 0.0)) guard("correct");
+        integrate();  // 1. gravity, then positions and orientations
+        detect();     // 2. overlapping pairs, and the swept test of fast spheres
+        respond();    // 3. the model's velocity responder, once per contact
+        correct();    // 4. the model's position corrector, once per contact
     }
     ++steps_;
     time_ += settings_.time_step;
@@ -96,7 +88,16 @@ bool has_gravity(const WorldSettings& settings, const Shortcuts& shortcuts) {
 
 }  // namespace
 
-void World::integrate() { (void)integrate_bodies(false, false); }
+void World::integrate() {
+    // With the grid, the same pass over the bodies copies what the broad phase reads into its
+    // proxies (and the swept test's starts), for the detect() that follows: at N = 100,000 the
+    // bodies (328 bytes each) fit in no cache, and a separate pass cost as much as the grid.
+    const bool discrete = settings_.contact_timing == ContactTiming::discrete;
+    const bool grid = discrete && uses_grid();
+    const double poison = integrate_bodies(grid, grid && settings_.swept_spheres);
+    proxies_fresh_ = grid;
+    if (!(poison == 0.0)) guard("integrate");
+}
 
 double World::integrate_bodies(bool gather, bool swept) {
     const double dt = settings_.time_step;
@@ -149,12 +150,24 @@ void World::gather_body(std::uint32_t i, bool swept, double dt, const Vector3& g
         if (body.shape.kind == ShapeKind::sphere) {
             travel = length(body.position - start);
             smallest_radius = std::min(smallest_radius, body.shape.radius);
+        } else if (body.shape.kind == ShapeKind::box) {
+            // A box is not traced, but a fast sphere's path must be met where the box went.
+            travel = length(body.position - start);
         }
     }
     proxies_.add(body, i, travel, start);
 }
 
-void World::detect() { find_contacts(false); }
+void World::detect() {
+    // The proxies integrate() gathered, unless the bodies may have changed since.
+    find_contacts(proxies_fresh_);
+    proxies_fresh_ = false;
+    const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
+    if (swept) sweep_fast_spheres();
+    // Only the spheres the swept test moved back changed here; the guard looks at those (and,
+    // on a find, at all, to name the first in body order).
+    guard_bodies("detect", swept ? std::span<const std::uint32_t>(sweep_scratch_.moved) : std::span<const std::uint32_t>());
+}
 
 void World::gather_proxies() {
     const auto count = static_cast<std::uint32_t>(bodies_.size());
@@ -224,7 +237,10 @@ void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
     add_contact_if_any(i, j);
 }
 
-void World::respond() { (void)respond_contacts(); }
+void World::respond() {
+    proxies_fresh_ = false;
+    if (!(respond_contacts() == 0.0)) guard("respond");
+}
 
 double World::respond_contacts() {
     response_energy_change_ = 0.0;
@@ -251,7 +267,10 @@ double World::respond_contacts() {
     return sum;
 }
 
-void World::correct() { (void)correct_contacts(); }
+void World::correct() {
+    proxies_fresh_ = false;
+    if (!(correct_contacts() == 0.0)) guard("correct");
+}
 
 double World::correct_contacts() {
     if (model_.correct == nullptr) return 0.0;

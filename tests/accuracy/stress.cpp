@@ -46,6 +46,16 @@ TEST_CASE("the corpus covers what the issue asks for", "[stress]") {
     for (const StressScene& scene : stress_corpus(true)) names += scene.name + " ";
     for (const char* expected : {"mass-ratio-1e-9", "mass-ratio-1e9", "speed-1e4-box", "time-step-1e-6", "time-step-0.1",
                                  "bodies-10000", "steps-1e6", "deep-overlap", "coincident-centres", "far-from-origin",
-                                 "zero-gravity", "gravity-100g"})
+                                 "zero-gravity", "gravity-100g", "kinematic-event", "spin-1e4-skew", "thin-box-fast-ball",
+                                 "event-gas"})
         CHECK(names.find(std::string(expected) + " ") != std::string::npos);
+}
+
+TEST_CASE("every refused scene of the corpus is refused, naming its field", "[stress][refused]") {
+    for (const RefusedScene& scene : refused_scenes()) {
+        const RefusalResult result = check_refusal(scene);
+        CAPTURE(scene.name, result.message);
+        CHECK(result.field == scene.field);
+        CHECK(result.passed);
+    }
 }

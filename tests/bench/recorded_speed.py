@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The recorded run of `./workbook bench speed` (bench/results/, written with --record) meets
-the speed goals, and its page says what its table says. Nothing is timed here: this reads
+its speed goals, and its page says what its table says. Nothing is timed here: this reads
 the numbers the bench measured on the machine and date the page names.
 
 Goals: at N = 1,000 at most one third of Chipmunk's time per step in the same run; cost growth

@@ -5,6 +5,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "workbook/response_model.hpp"
@@ -32,7 +33,7 @@ Vector3 centre_of_mass(const World& world) {
 }  // namespace
 
 TEST_CASE("Repeated projection passes leave s + (d0 - s)(1 - beta)^k of the depth, centre of mass fixed", "[projection]") {
-    constexpr double epsilon = 2.220446049250313e-16;
+    constexpr double epsilon = std::numeric_limits<double>::epsilon();
     const double d0 = 0.1;
     const double slop = 0.005;
     for (const double beta : {0.2, 0.5, 0.8, 1.0}) {
@@ -49,7 +50,7 @@ TEST_CASE("Repeated projection passes leave s + (d0 - s)(1 - beta)^k of the dept
 }
 
 TEST_CASE("With beta 1.5 one pass overshoots into a gap of (beta - 1)(d0 - s) - s, which later passes leave alone", "[projection]") {
-    constexpr double epsilon = 2.220446049250313e-16;
+    constexpr double epsilon = std::numeric_limits<double>::epsilon();
     const double d0 = 0.1;
     const double slop = 0.005;
     World world = overlapping_pair(d0, {1.5, slop});
@@ -66,7 +67,7 @@ TEST_CASE("With beta 1.5 one pass overshoots into a gap of (beta - 1)(d0 - s) - 
 }
 
 TEST_CASE("A ball in a corner: one pass clears a square corner, not an acute one (the page's several-contacts section)", "[projection]") {
-    constexpr double epsilon = 2.220446049250313e-16;
+    constexpr double epsilon = std::numeric_limits<double>::epsilon();
     const auto one_pass = [](const Vector3& wall_normal) {
         // A ball of radius 0.5 m at (0, 0.45, 0): 5 cm into the floor and 5 cm into the wall.
         const Vector3 wall_point = Vector3{0, 0.45, 0} - wall_normal * 0.45;

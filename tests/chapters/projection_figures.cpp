@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace workbook;
 
-constexpr double epsilon = 2.220446049250313e-16;
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
 
 Scene load(std::string_view name) {
     std::vector<std::string_view> responders;

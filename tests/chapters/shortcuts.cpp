@@ -4,6 +4,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -81,6 +82,61 @@ TEST_CASE("every chapter scene takes the same path with every shortcut on as wit
                 CAPTURE(i / 2);
                 FAIL("turning the energy probe off changed the bodies' path");
             }
+        }
+    }
+}
+
+TEST_CASE("print each chapter scene's path hash (run by hand around a change that must not change results)",
+          "[.hashes]") {
+    for (const fs::path& file : every_chapter_scene()) {
+        const Scene scene = load_scene(file);
+        testing::StateHash h;
+        for (const std::uint64_t step_hash : path_of(scene, Shortcuts{})) h.add(step_hash);
+        std::printf("%016llx %s\n", static_cast<unsigned long long>(h.value()), file.filename().string().c_str());
+    }
+}
+
+namespace {
+
+/// The state hash after each of `steps` steps, by step() or by calling the four stages in order.
+std::vector<std::uint64_t> stage_path(World world, std::size_t steps, bool by_stages) {
+    std::vector<std::uint64_t> hashes;
+    for (std::size_t n = 0; n < steps; ++n) {
+        if (by_stages) {
+            world.integrate();
+            world.detect();
+            world.respond();
+            world.correct();
+        } else {
+            world.step();
+        }
+        hashes.push_back(testing::state_hash(world));
+    }
+    return hashes;
+}
+
+}  // namespace
+
+TEST_CASE("step() is its four public stages in order: same state hash after every step", "[shortcuts][stages]") {
+    SECTION("every chapter scene (discrete timing)") {
+        for (const fs::path& file : every_chapter_scene()) {
+            const Scene scene = load_scene(file);
+            if (scene.settings.contact_timing != ContactTiming::discrete) continue;
+            CAPTURE(file.filename().string());
+            const World world = make_world(scene, *find_response_model(scene.responder));
+            const std::size_t steps = step_count(scene.duration, scene.settings.time_step);
+            CHECK(stage_path(world, steps, true) == stage_path(world, steps, false));
+        }
+    }
+    SECTION("fast bodies: a ball at 200 m/s against a ball, alone and among 20 others (the grid)") {
+        for (const int others : {0, 20}) {
+            CAPTURE(others);
+            std::vector<RigidBody> bodies{make_sphere(1.0, 0.05, {-1, 0, 0}, {200, 0, 0}), make_sphere(1.0, 0.05, {0, 0, 0}, {})};
+            for (int n = 0; n < others; ++n) bodies.push_back(make_sphere(1.0, 0.1, {0.3 * n, 5, 0}, {0, -50, 0}));
+            bodies.push_back(make_immovable_plane({0, 1, 0}, {0, -1, 0}));
+            const World world(bodies, WorldSettings{1.0 / 240, {0, -9.81, 0}}, *find_response_model("linear-impulse"));
+            const auto by_step = stage_path(world, 240, false);
+            CHECK(stage_path(world, 240, true) == by_step);
         }
     }
 }

@@ -348,3 +348,33 @@ TEST_CASE("a fraction sweep is checked value by value, with its path", "[scene][
                 "must be a number, got the string \"1\"");
     check_parts(error_from(with_sweep(R"({"slop": [0.5]})")), "sweep.slop", "unknown key (allowed here: fraction)");
 }
+
+TEST_CASE("a key given twice in one object is refused, naming it, at any depth", "[scene][errors]") {
+    const SceneError body = error_from(scene_with_second_body(
+        R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "mass": 2})"));
+    CHECK(body.field() == "bodies[1].mass");
+    CHECK(body.problem() == "the key \"mass\" is given twice in one object");
+    CHECK(error_from(scene_with(R"("time_step": 0.01, "time_step": 0.02, "duration": 1, )", valid_ball)).field() ==
+          "time_step");
+    CHECK(error_from(scene_with_second_body(R"({"shape": {"type": "sphere", "radius": 0.5, "radius": 1}, "mass": 1})"))
+              .field() == "bodies[1].shape.radius");
+}
+
+TEST_CASE("a value nested absurdly deep is refused by its path, without walking it recursively", "[scene][errors]") {
+    // 100,000 nested arrays once overflowed the stack: the error message dumped the value
+    // recursively. The first pass stops at the depth limit; nothing else ever sees the value.
+    constexpr int depth = 100'000;
+    const std::string nested = std::string(depth, '[') + std::string(depth, ']');
+    const SceneError error = error_from(scene_with_second_body(
+        R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "position": )" + nested + "}"));
+    CHECK_THAT(error.field(), StartsWith("bodies[1].position[0][0]"));
+    CHECK(error.problem() == "nested more than 32 levels deep (a scene needs 5: root, bodies, body, shape, vector)");
+    // Within the depth limit, a wrong value is described by its type and size, not dumped.
+    const SceneError shallow = error_from(scene_with_second_body(
+        R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "position": [[[[1, 2, 3]]]]})"));
+    CHECK(shallow.field() == "bodies[1].position");
+    CHECK(shallow.problem() == "must be an array of three numbers [x, y, z], got an array of 1 element");
+    const SceneError flat = error_from(scene_with_second_body(
+        R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "position": [1, 2]})"));
+    CHECK(flat.problem() == "must be an array of three numbers [x, y, z], got [1,2]");
+}

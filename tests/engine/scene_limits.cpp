@@ -90,3 +90,52 @@ TEST_CASE("contact timing and the exact-under-gravity integrator are scene choic
     CHECK(error.field() == "contact_timing");
     CHECK(error.problem() == "unknown contact timing \"later\" (available: discrete, event)");
 }
+
+TEST_CASE("a box's half extents have the same range as a radius", "[scene][limits]") {
+    const auto box = [](const std::string& half_extents) {
+        return R"({"shape": {"type": "box", "half_extents": )" + half_extents + R"(}, "mass": 1})";
+    };
+    const SceneError tiny = refused(scene(R"("time_step": 0.01, "duration": 1)", box("[1, 1e-160, 1]")));
+    CHECK(tiny.field() == "bodies[0].shape.half_extents[1]");
+    CHECK(tiny.problem() == "must lie in [1e-09, 1e+09] m, got 1e-160");
+    CHECK(refused(scene(R"("time_step": 0.01, "duration": 1)", box("[1e200, 1, 1]"))).field() ==
+          "bodies[0].shape.half_extents[0]");
+    CHECK(refused(scene(R"("time_step": 0.01, "duration": 1)", box("[1, 1, 1e-300]"))).field() ==
+          "bodies[0].shape.half_extents[2]");
+    // The ends of the range are fine.
+    CHECK_NOTHROW(parse_scene(scene(R"("time_step": 0.01, "duration": 1)", box("[1e-9, 1e9, 1]")), "ok.json"));
+}
+
+TEST_CASE("a time step longer than the limit is refused, not left to overflow", "[scene][limits]") {
+    const SceneError error = refused(scene(R"("time_step": 1e200, "duration": 1e201)", ball()));
+    CHECK(error.field() == "time_step");
+    CHECK(error.problem() == "must be at most 1 s, got 1e+200");
+    CHECK_NOTHROW(parse_scene(scene(R"("time_step": 1, "duration": 10)", ball()), "ok.json"));
+}
+
+TEST_CASE("a spin the rotation step cannot follow is refused, naming the body and the limit", "[scene][limits]") {
+    const std::string box = R"({"name": "top", "shape": {"type": "box", "half_extents": [1, 0.5, 0.2]}, "mass": 1, )";
+    const SceneError error =
+        refused(scene(R"("time_step": 0.01, "duration": 1)", box + R"("angular_velocity": [1e6, 1e6, 0]})"));
+    CHECK(error.field() == "bodies[0].angular_velocity");
+    CHECK_THAT(error.problem(), StartsWith("body \"top\" may spin at up to "));
+    CHECK_THAT(error.problem(), ContainsSubstring("the rotation step follows at most 1024 rad per step"));
+    // 10,000 rad/s at 1/240 s (about 40 rad a step) runs, in sub-steps; a ball of any spin turns exactly.
+    CHECK_NOTHROW(parse_scene(scene(R"("time_step": 0.004166666666666667, "duration": 1)",
+                                    box + R"("angular_velocity": [7000, 7000, 0]})"), "ok.json"));
+    CHECK_NOTHROW(parse_scene(scene(R"("time_step": 0.01, "duration": 1)", ball(R"(, "angular_velocity": [1e8, 1e8, 0])")),
+                              "ok.json"));
+}
+
+TEST_CASE("a file of far more bodies than the limit is refused from its text, in about its reading time", "[scene][limits]") {
+    // 300,000 small bodies (about 20 MB): counted by the first pass, before any document of
+    // them is built. This once took up to a minute (a parse callback is quadratic in
+    // nlohmann 3.11); the count is what is checked here, the speed by its absence of a timeout.
+    std::string bodies = R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})";
+    std::string all = bodies;
+    all.reserve(300'000 * (bodies.size() + 2));
+    for (int i = 1; i < 300'000; ++i) all += ", " + bodies;
+    const SceneError error = refused(scene(R"("time_step": 0.01, "duration": 1)", all));
+    CHECK(error.field() == "bodies");
+    CHECK(error.problem() == "300000 bodies are over the limit of 10000");
+}

@@ -44,6 +44,17 @@ int run_stress_command(bool full, const std::string& csv_path, const std::string
         fmt::print(stderr, "\n");
     }
     print_stress_table(std::cout, results);
+    // Scene files the loader must refuse, naming the field, in about their reading time.
+    fmt::print("\nrefused scenes (the loader must name the field)\n{:<18} {:>7}  {:<7}  {}\n", "scene", "time/s", "verdict",
+               "message");
+    bool refusals_pass = true;
+    for (const RefusedScene& scene : refused_scenes()) {
+        const RefusalResult r = check_refusal(scene);
+        refusals_pass = refusals_pass && r.passed;
+        const std::string message = r.message.size() > 110 ? r.message.substr(0, 107) + "..." : r.message;
+        fmt::print("{:<18} {:>7.2f}  {:<7}  {}\n", r.scene, r.seconds, r.passed ? "pass" : "FAIL", message);
+    }
+    if (!refusals_pass) return 1;
     if (!csv_path.empty()) {
         std::ofstream out(csv_path);
         write_stress_csv(out, results);

@@ -8,6 +8,7 @@
 
 #include "workbook/guards.hpp"
 #include "workbook/probes.hpp"
+#include "workbook/scene.hpp"
 
 namespace workbook::accuracy {
 
@@ -171,6 +172,80 @@ std::vector<StressScene> stress_corpus(bool full) {
                            1.0 / 240, {}));
     corpus.push_back(boxed("gravity-100g", "200 balls in a box under 100 g, e = 0.5", full ? 20'000 : 150, 200, 2.0, 0.5,
                            1.0 / 240, {0.0, -981.0, 0.0}));
+    // Kinematic bodies under event timing: a kinematic ball sweeps through 20 falling balls.
+    {
+        StressScene scene = boxed("kinematic-event", "a kinematic ball crosses a box of 20 falling balls, event timing, e = 0.9",
+                                  1'800, 20, 1.0, 0.9, 1.0 / 240, earth);
+        scene.check_energy = false;  // the kinematic ball does work on the others
+        const auto inner = scene.build;
+        scene.build = [inner](const ResponseModel& model) {
+            const World boxed_world = inner(model);
+            std::vector<RigidBody> bodies(boxed_world.bodies().begin(), boxed_world.bodies().end());
+            RigidBody mover = make_immovable_sphere(0.5, {-4.0, 0.0, 0.0});
+            mover.velocity = {1.0, 0.0, 0.0};
+            bodies.push_back(mover);
+            WorldSettings settings = boxed_world.settings();
+            settings.contact_timing = ContactTiming::event;
+            return World(bodies, settings, model);
+        };
+        // The kinematic ball ends where its velocity takes it: 1 m/s for 7.5 s.
+        scene.own_check_name = "kinematic";
+        scene.own_check = [](const World& world) {
+            const RigidBody& mover = world.bodies().back();
+            const double expected = -4.0 + world.time();
+            return std::abs(mover.position.x - expected) / (64.0 * eps * (4.0 + std::abs(expected)) * static_cast<double>(world.steps_taken()));
+        };
+        corpus.push_back(scene);
+    }
+    // Free rotation far beyond one radian a step: energy must hold (sub-steps).
+    {
+        StressScene scene;
+        scene.name = "spin-1e4-skew";
+        scene.what = "a box spinning at 10,000 rad/s on a skew axis (42 rad a step), no gravity";
+        scene.steps = full ? 240'000 : 2'400;
+        scene.check_momentum = true;
+        scene.build = [](const ResponseModel& model) {
+            RigidBody box = make_box(1.0, {0.3, 0.2, 0.1}, {0, 0, 0});
+            box.angular_velocity = normalized(Vector3{1, 2, 3}) * 1e4;
+            box.update_world_inertia();
+            return World({box}, settings_with(1.0 / 240, {}), model);
+        };
+        corpus.push_back(scene);
+    }
+    // A fast small ball against a thin pinned box: it must bounce, never pass through.
+    {
+        StressScene scene = boxed("thin-box-fast-ball", "a 1 cm ball at 100 m/s against a 2 cm thick pinned box, e = 1",
+                                  2'400, 0, 0.0, 1.0, 1.0 / 240, {});
+        const auto inner = scene.build;
+        scene.build = [inner](const ResponseModel& model) {
+            const World walls_only = inner(model);
+            std::vector<RigidBody> bodies(walls_only.bodies().begin(), walls_only.bodies().end());
+            RigidBody thin = make_box(1.0, {0.01, 5.0, 5.0}, {0, 0, 0});  // wall to wall: no way round it
+            thin.inverse_mass = 0.0;
+            thin.inertia_body = Matrix3::zero();
+            thin.update_world_inertia();
+            bodies.push_back(thin);
+            bodies.push_back(make_sphere(1.0, 0.01, {-2.5, 0.3, 0.2}, normalized(Vector3{1, 0.2, -0.1}) * 100.0));
+            return World(bodies, walls_only.settings(), model);
+        };
+        scene.own_check_name = "thin box";
+        scene.own_check = [](const World& world) { return world.bodies().back().position.x < 0.0 ? 0.0 : 2.0; };
+        corpus.push_back(scene);
+    }
+    // Event timing with many bodies: scales with N (candidates from the broad phase).
+    {
+        StressScene scene = boxed("event-gas", full ? "2,000 balls in a box, event timing, e = 1, no gravity"
+                                                    : "300 balls in a box, event timing, e = 1, no gravity",
+                                  full ? 2'400 : 120, full ? 2'000 : 300, 2.0, 1.0, 1.0 / 240, {});
+        const auto inner = scene.build;
+        scene.build = [inner](const ResponseModel& model) {
+            const World world = inner(model);
+            WorldSettings settings = world.settings();
+            settings.contact_timing = ContactTiming::event;
+            return World(std::vector<RigidBody>(world.bodies().begin(), world.bodies().end()), settings, model);
+        };
+        corpus.push_back(scene);
+    }
     return corpus;
 }
 
@@ -220,6 +295,7 @@ StressResult run_stress(const StressScene& scene, const ResponseModel& model,
                 result.box_ratio = std::max(result.box_ratio, ratio);
                 note(ratio, "box");
             }
+            if (scene.own_check) note(scene.own_check(world), scene.own_check_name.c_str());
             if (progress && n % every == 0) progress(n);
         }
     } catch (const NonFiniteState& error) {
@@ -228,6 +304,78 @@ StressResult run_stress(const StressScene& scene, const ResponseModel& model,
         result.worst = std::numeric_limits<double>::infinity();
     }
     if (result.worst_invariant.empty()) result.worst_invariant = "-";
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+namespace {
+
+/// A scene with the given top-level members (each followed by a comma) and bodies.
+std::string scene_text(const std::string& members, const std::string& bodies) {
+    return R"({"title": "stress", "responder": "none", )" + members + R"("bodies": [)" + bodies + "]}";
+}
+
+const std::string one_ball = R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})";
+
+}  // namespace
+
+std::vector<RefusedScene> refused_scenes() {
+    const std::string step = R"("time_step": 0.01, "duration": 1, )";
+    std::vector<RefusedScene> scenes;
+    scenes.push_back({"nested-1e5", "a position nested 100,000 arrays deep", [step] {
+                          const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "position": )" +
+                                                      deep + "}");
+                      },
+                      "bodies[0].position[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]"});
+    scenes.push_back({"duplicate-key", "a body gives its mass twice", [step] {
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "mass": 2})");
+                      },
+                      "bodies[0].mass"});
+    scenes.push_back({"box-1e-160", "a box 1e-160 m thick", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1, 1e-160, 1]}, "mass": 1})");
+                      },
+                      "bodies[0].shape.half_extents[1]"});
+    scenes.push_back({"box-1e200", "a box 1e200 m long", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1e200, 1, 1]}, "mass": 1})");
+                      },
+                      "bodies[0].shape.half_extents[0]"});
+    scenes.push_back({"time-step-1e200", "a time step of 1e200 s", [] {
+                          return scene_text(R"("time_step": 1e200, "duration": 1e201, )", one_ball);
+                      },
+                      "time_step"});
+    scenes.push_back({"spin-1e6-skew", "a box spinning at 1e6 rad/s on a skew axis, dt = 0.01 s", [step] {
+                          return scene_text(step, R"({"shape": {"type": "box", "half_extents": [1, 0.5, 0.2]}, "mass": 1, )"
+                                                  R"("angular_velocity": [1e6, 1e6, 0]})");
+                      },
+                      "bodies[0].angular_velocity"});
+    scenes.push_back({"bodies-3e5", "a file of 300,000 bodies (refused in about its reading time)", [step] {
+                          std::string bodies = one_ball;
+                          bodies.reserve(300'000 * (one_ball.size() + 2));
+                          for (int i = 1; i < 300'000; ++i) bodies += ", " + one_ball;
+                          return scene_text(step, bodies);
+                      },
+                      "bodies"});
+    scenes.push_back({"number-1e999", "a position of 1e999 m", [step] {
+                          return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "position": [1e999, 0, 0]})");
+                      },
+                      "bodies[0].position[0]"});
+    return scenes;
+}
+
+RefusalResult check_refusal(const RefusedScene& scene) {
+    RefusalResult result;
+    result.scene = scene.name;
+    const std::string text = scene.text();
+    const auto started = std::chrono::steady_clock::now();
+    try {
+        (void)parse_scene(text, scene.name + ".json");
+        result.message = "accepted";
+    } catch (const SceneError& error) {
+        result.field = error.field();
+        result.message = error.what();
+        result.passed = error.field() == scene.field;
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
 }

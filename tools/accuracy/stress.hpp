@@ -38,6 +38,9 @@ struct StressScene {
     bool check_energy = true;    ///< every body has e <= 1
     bool check_momentum = false;  ///< no gravity and no immovable body
     std::optional<Box> box;       ///< the closed box, if the scene has one
+    /// A check of the scene's own, after every step: measured / allowed (<= 1 passes), and its name.
+    std::function<double(const World&)> own_check;
+    std::string own_check_name;
 };
 
 /// The outcome of one scene.
@@ -55,6 +58,29 @@ struct StressResult {
     double seconds = 0.0;          ///< wall time of the run, invariants included
     [[nodiscard]] bool passed() const { return error.empty() && worst <= 1.0; }
 };
+
+/// A scene file the loader must refuse, naming the field.
+struct RefusedScene {
+    std::string name;   ///< short id, the table's first column
+    std::string what;   ///< what is wrong with it, one line
+    std::function<std::string()> text;  ///< the file's text (built on demand: one is 20 MB)
+    std::string field;  ///< the field the refusal must name
+};
+
+/// The scene files the loader must refuse: absurd input of every kind the limits cover.
+std::vector<RefusedScene> refused_scenes();
+
+/// The refusal's field and message, or "accepted" when the loader took the scene.
+struct RefusalResult {
+    std::string scene;
+    std::string field;    ///< the field the refusal named (empty when accepted)
+    std::string message;  ///< the whole message, or "accepted"
+    double seconds = 0.0;
+    bool passed = false;  ///< refused, naming the expected field
+};
+
+/// Loads one refused scene and checks its refusal.
+RefusalResult check_refusal(const RefusedScene& scene);
 
 /// The corpus: `full` is the on-demand version (10,000 bodies, 10^6 steps); otherwise the small
 /// version the test suite runs in a few seconds.

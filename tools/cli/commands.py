@@ -15,6 +15,7 @@ import textwrap
 from dataclasses import dataclass
 from typing import Callable
 
+from tools import wording
 from tools.cli import building, edition, host, prerequisites
 from tools.cli.console import Failure, Refusal, make_streams_safe, say, warn
 
@@ -247,12 +248,23 @@ def run_run(args, raw):
     if args.stride is not None:
         options += ["--stride", args.stride]
     building.build("dev", sim, to_stderr=True)
+    # The simulator's exit status says how a run ended (workbook-sim run --help): 2 refused,
+    # 3 stopped at a NaN, 4 internal error, 130 Ctrl-C. A run killed by a signal crashed: it is
+    # said in words and passed on as 128 + the signal, so a crash never reads as a refusal.
     status = 0
     for scene in scenes:
         if len(scenes) > 1:
             say(str(scene))
-        if run_program([tool(sim), "run", scene, *options]) != 0:
-            status = 1
+        returncode = run_program([tool(sim), "run", scene, *options])
+        crash = wording.crashed(returncode) if returncode < 0 else \
+            wording.crashed(signal_number=returncode - 128) if 128 < returncode < 256 and returncode != 130 else \
+            wording.crashed(returncode) if returncode > 255 else None
+        if crash:
+            print(f"workbook: the simulator {crash} on {scene}; this is a bug in the engine or in your "
+                  f"responder, not a problem with the scene", file=sys.stderr)
+            returncode = 128 - returncode if returncode < 0 else returncode
+        if returncode != 0 and status <= 128:
+            status = returncode
     return status
 
 

@@ -84,8 +84,23 @@ void explain(const workbook::Scene& scene, const workbook::World& world) {
         fmt::print("  {:<36} {:<7} {}\n", use.stage, use.used ? "used" : "skipped", use.why);
 }
 
-/// The exit status of a run the guard stopped; its samples up to there are still written.
-constexpr int exit_not_finite = 3;
+/// How a run ends, as its exit status (the front end maps each to its own message; see the
+/// help's footer). A crash is none of these: the process is killed by a signal, which a shell
+/// shows as 128 + the signal's number and Python's subprocess as minus that number.
+enum Exit : int {
+    exit_ran = 0,             ///< ran to the end of the scene
+    exit_output_failed = 1,   ///< could not write an output file
+    exit_refused = 2,         ///< the scene or the command line was refused; the message names file, field, problem
+    exit_not_finite = 3,      ///< the guard stopped the run at a NaN or an infinity; samples up to there are written
+    exit_internal_error = 4,  ///< an exception the simulator did not expect (a bug: please report it)
+    exit_interrupted = 130,   ///< Ctrl-C: 128 + SIGINT, as a shell reports it; samples so far are written
+};
+
+constexpr const char* exit_codes_help =
+    "Exit status: 0 ran to the end; 1 an output file could not be written; 2 the scene or command line was "
+    "refused (the message names the file, the field and the problem); 3 stopped at a NaN or an infinity (the "
+    "samples up to there are written); 4 internal error; 130 interrupted by Ctrl-C. A crash is none of these: "
+    "the process is killed by a signal (a shell shows 128 + its number).";
 
 int run_scene(const std::string& scene_path, const std::string& csv_path, bool quiet, bool explain_only,
               const std::string& trajectory_path, std::size_t stride) {
@@ -104,7 +119,7 @@ int run_scene(const std::string& scene_path, const std::string& csv_path, bool q
         // Recording a trajectory steps the same world with a recorder around the responder
         // (tools/sim/trajectory.cpp); it has no progress line.
         auto simulated = workbook::sim::simulate(scene, trajectory_path, stride);
-        if (!simulated) return 1;
+        if (!simulated) return exit_output_failed;
         samples = std::move(*simulated);
     }
 
@@ -112,12 +127,12 @@ int run_scene(const std::string& scene_path, const std::string& csv_path, bool q
         std::ofstream out(csv_path);
         if (!out) {
             fmt::print(stderr, "error: cannot write {}\n", csv_path);
-            return 1;
+            return exit_output_failed;
         }
         workbook::write_csv(out, samples);
         if (!out.flush()) {
             fmt::print(stderr, "error: writing {} failed\n", csv_path);
-            return 1;
+            return exit_output_failed;
         }
     } else if (quiet) {
         workbook::write_csv(std::cout, samples);
@@ -128,7 +143,7 @@ int run_scene(const std::string& scene_path, const std::string& csv_path, bool q
         return exit_not_finite;
     }
     // 128 + SIGINT, as a shell reports a run stopped by Ctrl-C.
-    return interrupted != 0 ? 130 : 0;
+    return interrupted != 0 ? exit_interrupted : exit_ran;
 }
 
 }  // namespace
@@ -155,7 +170,15 @@ int main(int argc, char** argv) {
 
     auto* list = app.add_subcommand("responders", "List the responder names a scene may use.");
 
-    CLI11_PARSE(app, argc, argv);
+    app.footer(exit_codes_help);
+    run->footer(exit_codes_help);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help is a ParseError too, with exit code 0; every real one is a refusal.
+        const int status = app.exit(error);
+        return status == 0 ? exit_ran : exit_refused;
+    }
     try {
         if (*list) {
             for (auto name : responder_names()) fmt::print("{}\n", name);
@@ -164,9 +187,12 @@ int main(int argc, char** argv) {
         return run_scene(scene_path, csv_path, quiet, explain_only, trajectory_path, stride);
     } catch (const workbook::SceneError& error) {
         fmt::print(stderr, "error: {}\n", error.what());
-        return 2;
+        return exit_refused;
     } catch (const workbook::NonFiniteState& error) {
         fmt::print(stderr, "stopped: {}\n", error.what());
         return exit_not_finite;
+    } catch (const std::exception& error) {
+        fmt::print(stderr, "internal error: {}\n", error.what());
+        return exit_internal_error;
     }
 }

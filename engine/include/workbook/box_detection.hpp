@@ -34,6 +34,10 @@ bool collide_sphere_box(const RigidBody& sphere, const RigidBody& box, Contact& 
 /// edges. Swapping a and b flips the normal and keeps the points.
 bool collide_box_box(const RigidBody& a, const RigidBody& b, Contact& out);
 
+/// The point of `box` (its orientation and half extents, its centre at `centre`, which may
+/// differ from its position) nearest to `point`: `point` itself when inside.
+Vector3 nearest_point_on_box(const RigidBody& box, const Vector3& centre, const Vector3& point);
+
 /// Any pair with at least one box, dispatched on the shapes: writes the contact with its body
 /// indices and returns true when they overlap, false otherwise (also for a pair without a box).
 /// A plane is always body 2, as in collide(); otherwise `a` is body 1.

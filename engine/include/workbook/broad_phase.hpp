@@ -33,7 +33,7 @@ struct GridProxy {
     double y = 0.0;             ///< centre, y, m
     double z = 0.0;             ///< centre, z, m
     double radius = 0.0;        ///< bounding radius, m (workbook::bounding_radius; unused for a plane)
-    double travel = 0.0;        ///< how far a swept sphere moved this step, m; 0 for every other body
+    double travel = 0.0;        ///< how far a swept sphere or a box moved this step, m; 0 for every other body
     Vector3 start{};            ///< with a swept set: where the body started the step, m (next to its end,
                                 ///< so that the swept test reads both from one place)
     std::uint32_t index = 0;    ///< body index
@@ -88,8 +88,10 @@ struct ProxySet {
         spheres = 0;
     }
 
-    /// Appends body `index` (the next one in body order), with the travel and start of a swept sphere.
-    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {}) {
+    /// Appends body `index` (the next one in body order), with the travel and start of a swept
+    /// sphere; `inflate` widens its bounding sphere (event timing's reach over a step).
+    void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {},
+             double inflate = 0.0) {
         if (body.shape.kind == ShapeKind::plane) {
             add_plane(body, index);
             return;
@@ -99,7 +101,7 @@ struct ProxySet {
         p.y = body.position.y;
         p.z = body.position.z;
         p.sphere = body.shape.kind == ShapeKind::sphere;
-        p.radius = p.sphere ? body.shape.radius : bounding_radius(body);
+        p.radius = (p.sphere ? body.shape.radius : bounding_radius(body)) + inflate;
         p.travel = travel;
         p.start = start;
         p.index = index;
@@ -127,7 +129,7 @@ private:
 /// gas, a pile, a few bodies) a grid whose cells are one diameter wide finds each body's
 /// neighbours in the 3 x 3 x 3 cells around it, a constant amount of work per body, so the
 /// whole pass is linear in N. Sort-and-sweep along one axis finds every body whose extent
-/// overlaps along that axis: in the 2D gas of the speed bench that is a strip through the whole box,
+/// overlaps along that axis: in the 2D gas of the speed bench (bench/gas.hpp) that is a strip through the whole box,
 /// about N * 2 d / L bodies, so its cost grows as N^1.5 (measured with bench/stages.cpp:
 /// at N = 100,000 the strip holds about 100 bodies against the grid's 0.5 per cell).
 ///
@@ -163,6 +165,12 @@ public:
     static constexpr std::uint32_t partner_may_touch = std::uint32_t{1} << 31;  ///< see sweep_partners()
     static constexpr std::uint32_t partner_index = partner_may_touch - 1;      ///< see sweep_partners()
 
+    /// After a find_pairs() of `set` (the same set): appends to `out` the index of every body
+    /// of the set whose bounding sphere (as gathered) comes within `radius` of `centre`, and
+    /// of every plane within `radius` of it; conservative by a relative 1e-9. Visits only the
+    /// cells near `centre` when there is a grid, every body otherwise.
+    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out) const;
+
     /// True when the last find_pairs() used a grid (false after it fell back to every pair).
     [[nodiscard]] bool has_grid() const { return has_grid_; }
 
@@ -171,7 +179,7 @@ public:
     /// in no particular order), as entries: the index (entry & partner_index), and the flag
     /// partner_may_touch unless spheres_may_touch() said no for the two paths as gathered (it
     /// must be asked again if the partner has been moved since). Planes always carry the flag.
-    /// Spheres and planes only. Empty for a body that is not fast.
+    /// Spheres, planes and boxes (boxes always carry the flag). Empty for a body that is not fast.
     [[nodiscard]] std::span<const std::uint32_t> sweep_partners(std::uint32_t body) const {
         if (body + 1 >= sweep_start_.size()) return {};
         return std::span<const std::uint32_t>(sweep_partners_).subspan(sweep_start_[body],

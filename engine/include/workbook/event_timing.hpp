@@ -5,35 +5,85 @@
 ///
 /// Between impacts every movable body follows the motion its integrator gives over a
 /// sub-interval tau, x(tau) = x + v tau + k g tau^2 with k = 1/2 for exact-under-gravity, 1 for
-/// semi-implicit Euler and 0 for explicit Euler. A sphere's height over a plane, and the squared
-/// distance between two spheres that share the same acceleration, are then quadratics in tau,
-/// so the time of impact has a closed form. So is the height over a plane of a box that does
-/// not spin: its lowest corner moves with its centre. The one case without a closed form, a
-/// movable sphere falling onto an immovable sphere, is a quartic and is bracketed and bisected
-/// instead. Spinning boxes, and boxes against spheres or boxes, are left to the discrete
-/// back-stop.
+/// semi-implicit Euler and 0 for explicit Euler; a kinematic body moves at its set velocity.
+/// A sphere's height over a plane, and the squared distance between two spheres that share
+/// the same acceleration, are then quadratics in tau, so the time of impact has a closed form.
+/// So is the height over a plane of a box that does not spin: its lowest corner moves with its
+/// centre. The one case without a closed form, a movable sphere falling onto an immovable
+/// sphere, is a quartic and is bracketed and bisected instead; a sphere against a box that does
+/// not spin is sampled along its path and bisected too. Spinning boxes, two boxes, and planes
+/// that turn are left to the discrete back-stop.
+///
+/// Why it scales: the pairs that may meet within a step are found once per step by the broad
+/// phase, each body's bounding sphere widened by how far it may move in the step; each body
+/// keeps the time its state refers to and is advanced only when it takes part in an event (and
+/// at the end of the step), and the events wait in a heap. An event then costs the times of
+/// impact of its two bodies with their candidates, not of every pair in the world.
 
+#include <cstdint>
 #include <optional>
+#include <vector>
 
+#include "workbook/broad_phase.hpp"
+#include "workbook/contact.hpp"
 #include "workbook/rigid_body.hpp"
-#include "workbook/world.hpp"
 
 namespace workbook {
+
+class World;
+enum class Integrator : std::uint8_t;
 
 /// k in x(tau) = x + v tau + k g tau^2 for `integrator` (see the file comment).
 double gravity_position_factor(Integrator integrator);
 
 /// The earliest tau in [0, limit] at which `a` and `b` (sphere-sphere, sphere-plane, or a box
-/// that does not spin and a plane, in either order) come into contact while approaching, or
+/// that does not spin and a plane or a sphere, in either order) come into contact while approaching, or
 /// nothing. Pairs that already overlap by more than rounding are left to the discrete back-stop.
 std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, const Vector3& gravity, double k,
                                      double limit);
 
-/// One step of `world` with event-accurate timing. After the last event the discrete stages
-/// run once on what still overlaps (deep initial overlaps, resting contacts), so nothing is
-/// left unanswered. A step handles at most a bounded number of events, after which the rest
-/// of it is discrete: a ball coming to rest on the ground bounces infinitely often in a
-/// finite time, and no event loop can follow that.
-void step_with_event_timing(World& world);
+/// A predicted impact of bodies i < j at time t within the step; stale once either body has
+/// taken part in a later event (its count of events no longer matches).
+struct ImpactEvent {
+    double t;
+    std::uint32_t i, j;
+    std::uint32_t events_i, events_j;  ///< the bodies' event counts when it was predicted
+};
+
+/// What World::step_with_event_timing() keeps between steps, so that a warm step allocates nothing.
+struct EventScratch {
+    std::vector<double> since;             ///< per body: the time within the step its state refers to, s
+    std::vector<double> reach;             ///< per body: how far it may move this step, m
+    std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
+    ProxySet proxies;                      ///< the bodies at the start of the step, widened by their reach
+    BroadPhase broad_phase;
+    std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap
+    std::vector<std::uint32_t> start;      ///< per body, into partners (a counting sort of pairs)
+    std::vector<std::uint32_t> partners;
+    std::vector<BodyPair> extra;           ///< candidates found later, for a body that outran its reach
+    /// The same by body: extra_head[i] is body i's first node (or none), each node a partner.
+    std::vector<std::uint32_t> extra_head;
+    struct ExtraNode {
+        std::uint32_t partner, next;
+    };
+    std::vector<ExtraNode> extra_nodes;
+    std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
+    std::vector<BodyPair> all_pairs;       ///< candidates and extras, sorted, for the back-stop
+    std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
+    std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
+};
+
+// One step of `world` with event-accurate timing. After the last event the discrete stages
+// run once on what still overlaps (deep initial overlaps, resting contacts), so nothing is
+// left unanswered. A step handles at most a bounded number of events (two per body, and at
+// most max_events_per_body for any one body), after which the rest of it is discrete: a ball
+// coming to rest on the ground bounces infinitely often in a finite time, and no event loop
+// can follow that.
+// (World::step_with_event_timing(), run by World::step() under event timing.)
+
+/// The most events one body takes part in within a step; after that its contacts are left to
+/// the discrete back-stop (a resting pile would otherwise spend the whole budget on bounces
+/// too small to see).
+inline constexpr std::uint32_t max_events_per_body = 16;
 
 }  // namespace workbook

@@ -14,10 +14,13 @@ struct SceneLimits {
     /// about a gigabyte.
     double max_steps = 1e7;
     /// The world stores contacts in proportion to the contacts there are and finds pairs with a
-    /// uniform grid, about 500 bytes a body: 10^5 bodies is the largest the speed
+    /// uniform grid (broad_phase.hpp), about 500 bytes a body: 10^5 bodies is the largest the speed
     /// bench runs (it builds its worlds in code); scene files stop at 10^4, which the sanitizer
     /// build still parses in seconds.
     std::size_t max_bodies = 10000;
+    /// s. No contact scene needs a coarser step, and with every other limit below, v dt and
+    /// g dt^2 then stay far from overflow (a step of 1e200 s overflowed at the first step).
+    double max_time_step = 1.0;
     /// m/s, per velocity component. 10^8 m/s squared times the largest mass stays far below
     /// the largest double (~1.8e308), as does every impulse and energy built from it.
     double max_speed = 1e8;
@@ -31,6 +34,16 @@ struct SceneLimits {
     double max_mass = 1e12;  ///< kg
     double min_radius = 1e-9;  ///< m
     double max_radius = 1e9;   ///< m
+    /// m, each of a box's half extents: the same range as a radius. A box of 1e-160 m (or
+    /// 1e200 m) has an inertia m h^2 that underflows to zero (or overflows), and gave a NaN
+    /// at its first contact.
+    double min_half_extent = 1e-9;
+    double max_half_extent = 1e9;  ///< m
+    /// rad per time step: how far a free body with unequal moments may turn in one step,
+    /// measured as largest_spin() dt (workbook/rotation.hpp). The rotation step follows up
+    /// to max_turn_per_substep * max_substeps (1024 rad) with energy constant to rounding;
+    /// a faster spin is refused, naming the body, rather than run with energy drifting.
+    double max_turn_per_step = 1024.0;
     /// m/s^2, per gravity component (100 g is about 981 m/s^2).
     double max_gravity = 1e6;
 };

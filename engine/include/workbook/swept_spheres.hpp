@@ -1,13 +1,16 @@
 #pragma once
 /// \file
 /// The swept test of discrete timing: a sphere that moved further than the smallest radius in
-/// a step is traced along its path, so that it cannot pass through another body unseen.
+/// a step is traced along its path against spheres, planes and boxes, so that it cannot pass
+/// through another body unseen. Boxes themselves are not traced: a fast box can pass through a
+/// thin body between two steps (docs/scene-format.md says so where scenes are described).
 
 #include <cstdint>
 #include <vector>
 
 #include "workbook/contact.hpp"
 #include "workbook/rigid_body.hpp"
+#include "workbook/tolerances.hpp"
 #include "workbook/vector3.hpp"
 
 namespace workbook {
@@ -41,15 +44,16 @@ inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, c
     const double rr = radii * radii;
     const double uu = length_squared(u);
     // s* < 1. A pair that can touch started within R + |u|, so |d.u| <= R |u| + u.u and its
-    // rounding stays far below 1e-9 (2 u.u + R^2) >= 1e-9 (u.u + R |u|).
-    if (-approach > uu + 1e-9 * (2.0 * uu + rr)) return false;
+    // rounding stays far below the slack times (2 u.u + R^2) >= slack (u.u + R |u|).
+    constexpr double slack = tolerances::may_touch_slack;
+    if (-approach > uu + slack * (2.0 * uu + rr)) return false;
     // Apart at the end.
-    if (length_squared(a1 - b1) < rr * (1.0 - 1e-9)) return false;
+    if (length_squared(a1 - b1) < rr * (1.0 - slack)) return false;
     const double far = length_squared(d) * uu;
-    return far - approach * approach <= rr * uu + 1e-9 * far;
+    return far - approach * approach <= rr * uu + slack * far;
 }
 
-/// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
+/// What World::sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
 struct SweepScratch {
     std::vector<Vector3> starts;         ///< without the grid: where each body started the step
     std::vector<std::uint32_t> moved;    ///< spheres moved back this step, in index order
@@ -59,14 +63,14 @@ struct SweepScratch {
     std::vector<std::uint32_t> boxes;    ///< the boxes, which the swept test's partners leave out
 };
 
-/// After detect(): every sphere that moved further than the smallest radius in the world is
-/// traced from where it started the step to where it ended, in index order; if it went through
-/// another sphere, or its centre ended behind a plane, it goes back to the moment of touching
-/// and its contacts are detected again there, plus that touch unless the partner overlaps it
-/// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
-/// are traced against the part of its path it did travel. With the grid of this step's
-/// detect(), only the candidates the broad phase found are tried, with the same result as
-/// trying every body.
-void sweep_fast_spheres(World& world);
+// After detect(): every sphere that moved further than the smallest radius in the world is
+// traced from where it started the step to where it ended, in index order; if it went through
+// another sphere or a box, or its centre ended behind a plane, it goes back to the moment of touching
+// and its contacts are detected again there, plus that touch unless the partner overlaps it
+// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
+// are traced against the part of its path it did travel. With the grid of this step's
+// detect(), only the candidates the broad phase found are tried, with the same result as
+// trying every body.
+// (World::sweep_fast_spheres(), a private stage of World::detect().)
 
 }  // namespace workbook

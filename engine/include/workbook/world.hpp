@@ -12,6 +12,7 @@
 
 #include "workbook/broad_phase.hpp"
 #include "workbook/contact.hpp"
+#include "workbook/event_timing.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
@@ -106,11 +107,19 @@ public:
     /// A world of `bodies` that steps with `settings` and answers contacts with `model`.
     World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model);
 
-    /// Runs the four stages once and advances the clock.
+    /// Runs the four stages once, in order, and advances the clock: exactly integrate(),
+    /// detect(), respond(), correct() (a test holds it to that, state hash for state hash).
+    /// Under event timing the bodies instead move from impact to impact within the step, each
+    /// answered at its moment (event_timing.hpp), and the same detection, response and
+    /// correction then answer what still overlaps.
     void step();
 
-    void integrate();  ///< stage 1: gravity, then positions and orientations
-    void detect();     ///< stage 2: fills contacts() with every overlapping pair
+    /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
+    /// broad phase's proxies in the same pass, for the detect() that follows.
+    void integrate();
+    /// Stage 2: fills contacts() with every overlapping pair, then (discrete timing, swept
+    /// spheres on) traces each fast sphere along its path (swept_spheres.hpp).
+    void detect();
     void respond();    ///< stage 3: the model's velocity responder, once per contact
     void correct();    ///< stage 4: the model's position corrector, once per contact
 
@@ -122,8 +131,11 @@ public:
     [[nodiscard]] const ResponseModel& model() const { return model_; }
     /// The bodies, in scene order.
     [[nodiscard]] std::span<const RigidBody> bodies() const { return bodies_; }
-    /// The bodies, writable (for tests and tools).
-    [[nodiscard]] std::span<RigidBody> bodies() { return bodies_; }
+    /// The bodies, writable (for tests and tools); the next detect() then gathers them afresh.
+    [[nodiscard]] std::span<RigidBody> bodies() {
+        proxies_fresh_ = false;
+        return bodies_;
+    }
     /// The contacts found by the last detect().
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
 
@@ -148,8 +160,10 @@ public:
     [[nodiscard]] std::uint64_t steps_taken() const { return steps_; }
 
 private:
-    friend void step_with_event_timing(World& world);  // workbook/event_timing.hpp
-    friend void sweep_fast_spheres(World& world);      // workbook/swept_spheres.hpp
+    /// Under event timing, the whole step (event_timing.cpp; see workbook/event_timing.hpp).
+    void step_with_event_timing();
+    /// Part of detect(): the swept test of fast spheres (swept_spheres.cpp; see workbook/swept_spheres.hpp).
+    void sweep_fast_spheres();
     /// Throws NonFiniteState naming `stage` when check_finite is on and a body is not finite.
     void guard(const char* stage) const;
     /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
@@ -179,7 +193,10 @@ private:
     BroadPhase broad_phase_;
     std::vector<BodyPair> pairs_;
     ProxySet proxies_;
+    /// True from an integrate() that gathered proxies_ to the detect() that uses them.
+    bool proxies_fresh_ = false;
     SweepScratch sweep_scratch_;
+    EventScratch event_scratch_;
     Shortcuts shortcuts_;
     bool used_broad_phase_ = false;
     WorldSettings settings_;
