@@ -40,6 +40,11 @@ void draw_contact(SeededRandom& random, Case& c) {
     c.body1.position = position(random);
     const double gap = decades(random, -2.0, 1.0);
     c.body2.position = c.body1.position - c.contact.normal * gap;
+    if (chance(random, 0.4)) {  // a plane's anchor or a box's centre far to the side
+        const Vector3 side = cross(c.contact.normal, random.direction());
+        const double away = decades(random, -2.0, 2.0);
+        c.body2.position = c.body2.position + side * away;
+    }
     const int count = 1 + int(random.uniform(0.0, 4.0));
     const double zero = chance(random, 0.1) ? 1.0 : 0.15;
     c.contact.point_count = 0;

@@ -440,8 +440,9 @@ inline bool set_motion(SeededRandom& random, Case& c, Approach a) {
 }
 
 /// Positions for a pair along the normal: exactly touching (the gap between the two spheres
-/// is 0) with probability 0.3, else overlapping a little; one contact point between them,
-/// with the normal not through the centres (the point slides sideways) with probability 0.5.
+/// is 0) with probability 0.3, else overlapping a little; one contact point between them, off
+/// the line of centres with probability 0.5, and body 2's centre far to the side of the normal
+/// (a plane's anchor, a box's centre) with probability 0.4.
 inline void place_pair(SeededRandom& random, Case& c) {
     const Vector3 n = c.contact.normal;
     c.body1.position = position(random);
@@ -451,6 +452,13 @@ inline void place_pair(SeededRandom& random, Case& c) {
     const double overlap = touching ? 0.0 : (r1 + r2) * decades(random, -6.0, -1.0);
     c.body2.position = c.body1.position - n * (r1 + r2 - overlap);
     Vector3 point = c.body1.position - n * (r1 - overlap / 2);
+    if (chance(random, 0.4)) {
+        // Body 2 is a plane or a box face whose centre lies far to the side: the normal is not
+        // the line through the centres.
+        const Vector3 side = cross(n, random.direction());
+        const double away = decades(random, -2.0, 2.0);
+        c.body2.position = c.body2.position + side * away;
+    }
     if (chance(random, 0.5)) {
         const Vector3 side = cross(n, random.direction());
         const double reach = decades(random, -3.0, 1.0);
