@@ -233,7 +233,9 @@ bool draw_manifold(SeededRandom& random, Case& c) {
     }
     // Falls onto the face at speed s, sliding, and rocks at up to 3 s / size.
     const double s = chance(random, 0.15) ? decades(random, -12.0, -6.0) : speed(random);
-    const Vector3 slide = cross(n, random.direction()) * (s * random.uniform(0.0, 2.0));
+    const Vector3 across = cross(n, random.direction());
+    const double slide_speed = s * random.uniform(0.0, 2.0);
+    const Vector3 slide = across * slide_speed;
     c.body1.velocity = c.body2.velocity - n * s + slide;
     const Vector3 rock = random.direction();
     const double spin = chance(random, 0.2) ? 0.0 : s / size * random.uniform(0.0, 3.0);
