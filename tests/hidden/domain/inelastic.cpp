@@ -139,6 +139,17 @@ TEST_CASE("sampled pairs that do not approach: moving apart, sliding, equal velo
         },
         [](const Case& c) { return judge_resolve(c, laws::separating); },
         [](const Case& c) { return pinned(c) < 2 && normal_velocity(c) >= 0.0; });
+    // And a pair that approaches must still be resolved, so that a resolve() that does nothing
+    // cannot pass this step.
+    RigidBody left = make_sphere(2.0, 0.5, {0, 0, 0}, {1, 0, 0});
+    RigidBody right = make_sphere(1.0, 0.5, {1, 0, 0}, {-1, 0, 0});
+    Contact contact;
+    contact.normal = {-1, 0, 0};
+    contact.add_point({0.5, 0, 0}, 0.0);
+    inelastic::resolve(left, right, contact);
+    testing::expect_at_least(laws::approach, 0.0, dot(left.velocity - right.velocity, contact.normal), rounding(2.0), "m/s",
+                             "body 1: m = 2 kg, v = (1, 0, 0) m/s; body 2: m = 1 kg, v = (-1, 0, 0) m/s; normal (-1, 0, 0) "
+                             "(approaching: normal relative velocity after)");
 }
 
 TEST_CASE("sampled pairs over the whole domain: the energy lost", "[inelastic][step:5:energy-lost][points:3]") {

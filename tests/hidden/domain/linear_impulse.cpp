@@ -138,6 +138,18 @@ TEST_CASE("sampled pairs that do not approach get no impulse: moving apart, slid
         },
         [](const Case& c) { return judge_resolve(c, laws::separating); },
         [](const Case& c) { return normal_velocity(c) >= 0.0; });
+    // And a pair that approaches must still get an impulse (on either body: how much each gets
+    // is step 4's), so that a resolve() that does nothing cannot pass this step.
+    RigidBody left = make_sphere(2.0, 0.5, {0, 0, 0}, {1, 0, 0});
+    RigidBody right = make_sphere(1.0, 0.5, {1, 0, 0}, {-1, 0, 0});
+    Contact contact;
+    contact.normal = {-1, 0, 0};
+    contact.add_point({0.5, 0, 0}, 0.0);
+    linear_impulse::resolve(left, right, contact);
+    const double change = length(left.velocity - Vector3{1, 0, 0}) + length(right.velocity - Vector3{-1, 0, 0});
+    testing::expect_at_least(laws::respond, 1e-6, change, 0.0, "m/s",
+                             "body 1: m = 2 kg, v = (1, 0, 0) m/s; body 2: m = 1 kg, v = (-1, 0, 0) m/s; normal (-1, 0, 0) "
+                             "(approaching: |v1' - v1| + |v2' - v2|, how much resolve changed the velocities)");
 }
 
 TEST_CASE("sampled pairs, normals of any length, e from 0 to 1: the impulse size", "[linear-impulse][step:3:impulse-size][points:3]") {

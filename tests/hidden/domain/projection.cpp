@@ -180,6 +180,17 @@ TEST_CASE("sampled pairs and knobs over the whole domain: only positions change"
             return unchanged(c, a1, a2, {.position = true}, "correct");
         },
         [](const Case&) { return true; });
+    // And an overlapping pair must still be pushed apart, so that a correct() that does nothing
+    // cannot pass this step.
+    RigidBody top = make_sphere(1.0, 0.5, {0, 0.45, 0});
+    RigidBody bottom = make_sphere(3.0, 0.5, {0, -0.45, 0});
+    Contact contact;
+    contact.normal = {0, 1, 0};
+    contact.add_point({0, 0, 0}, 0.1);
+    projection::correct(top, bottom, contact, PositionCorrection{});
+    testing::expect_at_least(laws::still_pushed, 1.0, top.position.y - bottom.position.y, rounding(1.0), "m",
+                             "body 1: m = 1 kg at (0, 0.45, 0) m; body 2: m = 3 kg at (0, -0.45, 0) m; normal (0, 1, 0), depth 0.1 m "
+                             "(the distance between the centres along n after)");
 }
 
 TEST_CASE("sampled pairs of two movable bodies with any fraction and slop, depths of 0 among them",
