@@ -12,6 +12,28 @@
 /// Chapter 4, angular impulses (\ref chapter_angular_impulse): an impulse J n applied at a
 /// contact point away from the centre of mass changes both the velocity and the angular
 /// velocity of each body, and a contact with several points is resolved as one.
+///
+/// **Legal inputs** (what the tests draw, and all a function must handle; the same for every
+/// function below unless it says otherwise):
+/// - a body's `inverse_mass` is 0 (immovable: a wall, the ground, or a kinematic platform that
+///   moves with a velocity of its own) or a mass from 1e-100 to 1e100 kg; two bodies of a pair
+///   may be both immovable, both very heavy or both very light, or a ratio up to 1e200 apart;
+/// - velocities of any direction, 0 or from 1e-12 m/s (creeping) to 1e6 m/s; positions up
+///   to 1 km from the origin;
+/// - `contact.normal` a unit vector in any direction, from body 2 towards body 1, not
+///   necessarily the line through the centres; one or more contact points anywhere near the
+///   bodies, each at least 0 deep, and `contact.penetration` at least the deepest of them;
+/// - `restitution` from 0 to 1; any orientation; `inertia_body` symmetric positive definite
+///   and not necessarily diagonal, kept as it is on an immovable body (immovable is
+///   `inverse_mass == 0` alone).
+///
+/// Here also: angular velocities of any direction, an immovable body may spin (kinematic); a
+/// movable body's inertia is about its mass times a size from 1 cm to 10 m squared, kept within
+/// 1e-90 to 1e90 kg m^2 (its determinant a normal double), principal axes turned any way in
+/// the body. `point` anywhere near the bodies, its lever arms not along the normal. A contact
+/// of several points is a face, an edge or a few corners of body 1 within a few of its sizes,
+/// where some points may approach while others rest or move away (a rocking box).
+/// apply_impulse() and resolve() change velocities and angular velocities only.
 namespace workbook::angular_impulse {
 
 /// Step 1. The inverse inertia tensor in the world frame, R I^-1 R^T, where I is

@@ -12,6 +12,24 @@
 /// Chapter 3, linear impulses with restitution (\ref chapter_linear_impulse): one impulse
 /// J n along the contact normal, sized so that the relative normal velocity is reversed and
 /// scaled by the coefficient of restitution e.
+///
+/// **Legal inputs** (what the tests draw, and all a function must handle; the same for every
+/// function below unless it says otherwise):
+/// - a body's `inverse_mass` is 0 (immovable: a wall, the ground, or a kinematic platform that
+///   moves with a velocity of its own) or a mass from 1e-100 to 1e100 kg; two bodies of a pair
+///   may be both immovable, both very heavy or both very light, or a ratio up to 1e200 apart;
+/// - velocities of any direction, 0 or from 1e-12 m/s (creeping) to 1e6 m/s; positions up
+///   to 1 km from the origin;
+/// - `contact.normal` a unit vector in any direction, from body 2 towards body 1, not
+///   necessarily the line through the centres; one or more contact points anywhere near the
+///   bodies, each at least 0 deep, and `contact.penetration` at least the deepest of them;
+/// - `restitution` from 0 to 1; any orientation; `inertia_body` symmetric positive definite
+///   and not necessarily diagonal, kept as it is on an immovable body (immovable is
+///   `inverse_mass == 0` alone).
+///
+/// relative_normal_velocity() and impulse_magnitude() take a `normal` of any length from 1e-3 to
+/// 1e3 (not only a unit one), and impulse_magnitude() any `restitution` from 0 to 1 and any
+/// motion, approaching or not. resolve() changes the two velocities only.
 namespace workbook::linear_impulse {
 
 /// Step 1. The relative normal velocity v12 . n = (v1 - v2) . n, in m/s when `normal` is a

@@ -5,9 +5,7 @@ namespace workbook::projection {
 void correct(RigidBody& body1, RigidBody& body2, const Contact& contact, const PositionCorrection& knobs) {
     const double total = body1.inverse_mass + body2.inverse_mass;
     if (total <= 0.0) return;
-    double deepest = 0.0;
-    for (int i = 0; i < contact.point_count; ++i) deepest = std::max(deepest, contact.points[i].penetration);
-    const double depth = depth_to_remove(deepest, knobs);
+    const double depth = depth_to_remove(contact.penetration, knobs);
     const double share1 = body1.inverse_mass / total;
     const double share2 = body2.inverse_mass / total;
     body1.position = body1.position + contact.normal * (depth * share1);

@@ -1,0 +1,15 @@
+// Mutant of chapter 3 for the grader's tests: resolve stores each body's velocity change factor, J/m, in place of its inverse mass
+// Only what differs from the reference is here; tests/grader/compose.py adds the rest.
+namespace workbook::linear_impulse {
+
+void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact) {
+    const Vector3& n = contact.normal;
+    if (relative_normal_velocity(body1, body2, n) >= 0.0) return;
+    const double j = impulse_magnitude(body1, body2, n, combined_restitution(body1, body2));
+    body1.velocity += (j * body1.inverse_mass) * n;
+    body2.velocity -= (j * body2.inverse_mass) * n;
+    body1.inverse_mass = j * body1.inverse_mass;
+    body2.inverse_mass = j * body2.inverse_mass;
+}
+
+}  // namespace workbook::linear_impulse
