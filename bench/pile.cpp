@@ -74,6 +74,8 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.velocity_iterations = knobs.velocity_iterations;
     settings.contact_solver.position_iterations = knobs.position_iterations;
     settings.contact_solver.warm_start = knobs.warm_start;
+    settings.swept_spheres = knobs.swept;
+    settings.contact_solver.tolerance = knobs.tolerance;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
     const std::clock_t start = std::clock();

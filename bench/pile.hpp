@@ -38,11 +38,13 @@ PileResult measure_pile(const Pile& pile, const std::vector<double>& x, const st
 
 /// The workbook's knobs for the pile (the defaults are what `resting-contact` scenes use).
 struct PileKnobs {
-    int velocity_iterations = 20;
-    int position_iterations = 20;
+    int velocity_iterations = 100;
+    int position_iterations = 100;
     bool warm_start = true;
-    double fraction = 0.2;  ///< share of the overlap beyond the slop removed per step
-    double slop = 0.001;    ///< m
+    double fraction = 0.5;  ///< share of the overlap beyond the slop removed per step
+    double slop = 0.002;    ///< m
+    bool swept = true;      ///< the swept test of fast spheres (WorldSettings::swept_spheres)
+    double tolerance = 1e-9;  ///< m/s, ContactSolverSettings::tolerance
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

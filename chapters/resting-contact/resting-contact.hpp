@@ -45,9 +45,10 @@ double accumulate(double& accumulated, double increment);
 void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
              const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt);
 
-/// Step 4. Warm start: applies the impulse already accumulated at every point,
-/// `impulses.points[i].normal` along +normal on body 1 (and its opposite on body 2) at the
-/// point, with angular terms (as chapter 4's angular_impulse::apply_impulse()).
+/// Step 4. Warm start: applies the impulse already accumulated at every point on body 1 (and
+/// its opposite on body 2) at the point, with angular terms (as chapter 4's
+/// angular_impulse::apply_impulse()): `normal` along the contact normal plus `friction[0]`
+/// and `friction[1]` along the two workbook::friction_tangents() of the normal.
 void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses);
 
 /// Step 5. One pass over the points of one contact: at each, in order, the impulse
@@ -57,6 +58,15 @@ void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, cons
 /// change of a point's normal velocity this pass made, |applied| / mass, m/s (0 when none).
 double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
+/// Step 7 (friction). One pass over the points of one contact for Coulomb friction with
+/// coefficient `friction`: at each point, the tangential relative velocity along the two
+/// workbook::friction_tangents() t1, t2 is brought to zero by impulses of size
+/// -(v . t) / k_t (k_t: step 1's k with t for n), added to `friction`, and the sum is kept
+/// within the disc of radius `friction` x `normal` (scaled back onto its rim when outside);
+/// what changed is applied. Returns the largest change of a point's tangent velocity, m/s.
+double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+                      double friction);
+
 /// Step 6. The same pass for the overlap: the bodies' velocities are the pseudo-velocities
 /// (the world swaps them in, starting from zero), the target is `bias` and the sum is kept in
 /// `pseudo`. Returns the largest change of a point's normal pseudo-velocity, m/s.
@@ -64,6 +74,6 @@ double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact
 
 /// The functions above as the world's contact solver calls them (response model
 /// `resting-contact`).
-inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, &solve_position};
+inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, &solve_friction, &solve_position};
 
 }  // namespace workbook::resting_contact

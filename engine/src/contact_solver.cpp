@@ -24,6 +24,14 @@ void turn_by(RigidBody& body, const Vector3& turn) {
 
 }  // namespace
 
+std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
+    // Cross the normal with the axis it is least aligned with: never a short vector.
+    const double ax = std::abs(normal.x), ay = std::abs(normal.y), az = std::abs(normal.z);
+    const Vector3 axis = ax <= ay && ax <= az ? Vector3{1, 0, 0} : ay <= az ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+    const Vector3 t1 = normalized(cross(normal, axis));
+    return {t1, cross(normal, t1)};
+}
+
 void ContactSolver::recall(std::span<const Contact> contacts, const ContactSolverSettings& settings,
                            ContactSolverReport& report) {
     const double reach2 = settings.match_distance * settings.match_distance;
@@ -43,6 +51,7 @@ void ContactSolver::recall(std::span<const Contact> contacts, const ContactSolve
                 if (d2 < nearest) {
                     nearest = d2;
                     impulses.points[i].normal = found->normal_impulses[k];
+                    impulses.points[i].friction = found->friction_impulses[k];
                 }
             }
             if (nearest < reach2) ++report.warm_started_points;
@@ -61,6 +70,7 @@ void ContactSolver::remember(std::span<const Contact> contacts) {
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             r.positions[i] = contact.points[i].position;
             r.normal_impulses[i] = impulses_[c].points[i].normal;
+            r.friction_impulses[i] = impulses_[c].points[i].friction;
         }
     }
     std::ranges::sort(current_, {}, &Remembered::pair);
@@ -117,6 +127,9 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             const std::uint32_t c = order_[k];
             const Contact& contact = contacts[c];
             largest = std::max(largest, hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
+            if (settings.friction > 0.0 && hooks.solve_friction != nullptr)
+                largest = std::max(largest, hooks.solve_friction(bodies[contact.body1], bodies[contact.body2], contact,
+                                                                 impulses_[c], settings.friction));
         }
         report.velocity_passes = pass + 1;
         report.velocity_residual = largest;
@@ -137,8 +150,13 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
         contact.penetration = 0.0;
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             ContactPoint& point = contact.points[i];
-            const Vector3 change = dv1 + cross(dw1, point.position - body1.position) - dv2 - cross(dw2, point.position - body2.position);
-            point.penetration = std::max(point.penetration - dot(change, contact.normal) * dt, 0.0);
+            const Vector3 change1 = dv1 + cross(dw1, point.position - body1.position);
+            const Vector3 change2 = dv2 + cross(dw2, point.position - body2.position);
+            point.penetration = std::max(point.penetration - dot(change1 - change2, contact.normal) * dt, 0.0);
+            // The point moves with the bodies (halfway between the two material points), so
+            // that its lever arms stay those of the contact: a ball's along the normal.
+            const Vector3 shift = body1.is_immovable() ? change2 : body2.is_immovable() ? change1 : 0.5 * (change1 + change2);
+            point.position += shift * dt;
             contact.penetration = std::max(contact.penetration, point.penetration);
         }
     }

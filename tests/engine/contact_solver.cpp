@@ -55,7 +55,7 @@ double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact
     return pass(body1, body2, contact, p.bias, p.pseudo, p.mass);
 }
 
-constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, &solve_position};
+constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, nullptr, &solve_position};
 constexpr ResponseModel model{"test-solver", nullptr, nullptr, &hooks};
 
 /// A column of `count` balls of 1 kg and radius 0.05 m standing on the ground, each touching

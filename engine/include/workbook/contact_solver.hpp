@@ -31,7 +31,14 @@ struct PointImpulse {
     double bias = 0.0;     ///< normal pseudo-velocity the position pass aims for, m/s: the overlap to remove / dt
     double normal = 0.0;   ///< impulse accumulated along +n on body 1 this step, kg m/s; kept >= 0
     double pseudo = 0.0;   ///< pseudo-impulse accumulated by the position pass this step, kg m/s; kept >= 0
+    /// Friction impulse accumulated along the two tangents of friction_tangents(), kg m/s;
+    /// its length kept <= the friction coefficient times `normal`.
+    std::array<double, 2> friction{};
 };
+
+/// Two unit vectors that with `normal` make a right-handed orthonormal frame (n, t1, t2):
+/// the directions friction acts along. The same normal always gives the same pair.
+std::array<Vector3, 2> friction_tangents(const Vector3& normal);
 
 /// The solver's numbers for every point of one contact (the first `point_count` of the contact).
 struct ContactImpulses {
@@ -40,13 +47,15 @@ struct ContactImpulses {
 
 /// How the contact solver works; the defaults are the ones measured on the pile of discs.
 struct ContactSolverSettings {
-    int velocity_iterations = 20;  ///< most passes over all contacts for the velocities
-    int position_iterations = 20;  ///< most passes over all contacts for the overlap
+    int velocity_iterations = 100;  ///< most passes over all contacts for the velocities
+    int position_iterations = 100;  ///< most passes over all contacts for the overlap
     /// A pass that changes no point's normal velocity by more than this (m/s) ends the loop
     /// early: nothing approaches any more (to this tolerance).
     double tolerance = 1e-9;
     /// Start each step from the impulses the same points needed in the last step.
     bool warm_start = true;
+    /// Coulomb friction coefficient of every contact (0: frictionless, as the pile of discs).
+    double friction = 0.0;
     /// A point that approaches slower than this (m/s) gets no bounce: resting bodies would
     /// otherwise bounce on gravity's own speed of one step (g dt = 0.16 m/s at 60 Hz).
     double bounce_threshold = 0.5;
@@ -69,6 +78,10 @@ struct ContactSolverHooks {
     /// One pass over the contact's points for the velocities; returns the largest change of a
     /// point's normal velocity, m/s.
     double (*solve_velocity)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
+    /// One pass over the contact's points for friction (called after solve_velocity when the
+    /// friction coefficient is not 0); returns the largest change of a point's tangent velocity, m/s.
+    double (*solve_friction)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+                             double friction) = nullptr;
     /// One pass over the contact's points for the overlap, on bodies whose velocities are the
     /// pseudo-velocities; returns the largest change of a point's normal pseudo-velocity, m/s.
     double (*solve_position)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
@@ -112,6 +125,7 @@ private:
         Vector3 normal{};
         std::array<Vector3, max_contact_points> positions{};
         std::array<double, max_contact_points> normal_impulses{};
+        std::array<std::array<double, 2>, max_contact_points> friction_impulses{};
         std::uint8_t point_count = 0;
     };
     void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
