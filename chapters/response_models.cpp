@@ -8,11 +8,7 @@
 #include "linear-impulse.hpp"
 #include "projection.hpp"
 #include "angular-impulse.hpp"
-// Chapter 5 joins the table once chapters/CHAPTERS lists it (its folder is then on the path).
-#if __has_include("resting-contact.hpp")
 #include "resting-contact.hpp"
-#define WORKBOOK_HAVE_RESTING_CONTACT 1
-#endif
 #include "workbook/restitution.hpp"
 #include "workbook/response_model.hpp"
 
@@ -40,10 +36,8 @@ constexpr std::array models{
     ResponseModel{"linear-impulse", &linear_impulse::resolve, &projection::correct},
     ResponseModel{"angular-impulse", &angular_impulse::resolve, &projection::correct},
     ResponseModel{"angular-impulse-one-by-one", &resolve_points_one_by_one, &projection::correct},
-#ifdef WORKBOOK_HAVE_RESTING_CONTACT
     // Every contact of a step solved together (the world's contact solver calls the steps).
     ResponseModel{"resting-contact", nullptr, nullptr, &resting_contact::hooks},
-#endif
 };
 }  // namespace
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace workbook {
 
@@ -92,19 +91,17 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
         saved_angular_velocity_[b] = bodies[b].angular_velocity;
     }
 
-    // The order of the passes: from the bottom up against gravity (the lower body of each
-    // contact first), so that the weight of a stack reaches the ground in the first pass;
-    // every second pass runs top down. Ties keep detection's order.
+    // The order of the passes: from the bottom up against gravity, by the height of each
+    // contact's points, so that the weight of a stack reaches the ground in the first pass
+    // (the ground's contact under a ball comes before the contact on top of that ball). Ties
+    // keep detection's order.
     order_.resize(contacts.size());
     height_.resize(contacts.size());
     for (std::uint32_t c = 0; c < contacts.size(); ++c) {
         order_[c] = c;
-        const RigidBody& body1 = bodies[contacts[c].body1];
-        const RigidBody& body2 = bodies[contacts[c].body2];
-        // An immovable body (the ground, a wall) does not count: its position is any point.
-        const double h1 = body1.is_immovable() ? std::numeric_limits<double>::infinity() : dot(body1.position, up);
-        const double h2 = body2.is_immovable() ? std::numeric_limits<double>::infinity() : dot(body2.position, up);
-        height_[c] = std::min(h1, h2);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < contacts[c].point_count; ++i) sum += dot(contacts[c].points[i].position, up);
+        height_[c] = contacts[c].point_count > 0 ? sum / contacts[c].point_count : 0.0;
     }
     std::ranges::stable_sort(order_, {}, [&](std::uint32_t c) { return height_[c]; });
 
