@@ -81,7 +81,7 @@ def main():
             "A pile of 1,000 discs dropped into a box",
             "A thousand frictionless discs of 5 cm radius and 1 kg (e = 0) fall from a loose grid into a box "
             "3.16 m wide and settle into a pile: the benchmark of the chapter, where every disc touches up to six.",
-            pile(1000), 5.0),
+            pile(1000), 3.0),
         "stack-knocked-over": scene(
             "A stack of five boxes knocked over by a ball",
             "A stack of five boxes stands on the ground for half a second; then a 2 kg ball at 6 m/s hits the "
