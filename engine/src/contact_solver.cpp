@@ -103,7 +103,11 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
         for (std::size_t i = 0; i < contacts[c].point_count; ++i) sum += dot(contacts[c].points[i].position, up);
         height_[c] = contacts[c].point_count > 0 ? sum / contacts[c].point_count : 0.0;
     }
-    std::ranges::stable_sort(order_, {}, [&](std::uint32_t c) { return height_[c]; });
+    // Ties broken by index: the order of a stable sort, without the buffer std::stable_sort
+    // allocates (a warm step allocates nothing).
+    std::ranges::sort(order_, [&](std::uint32_t a, std::uint32_t b) {
+        return height_[a] < height_[b] || (height_[a] == height_[b] && a < b);
+    });
 
     // 1. What each point aims for, computed once from the velocities before any impulse.
     for (std::size_t c = 0; c < contacts.size(); ++c) {
