@@ -8,6 +8,7 @@
 #include "linear-impulse.hpp"
 #include "projection.hpp"
 #include "angular-impulse.hpp"
+#include "resting-contact.hpp"
 #include "workbook/restitution.hpp"
 #include "workbook/response_model.hpp"
 
@@ -35,6 +36,8 @@ constexpr std::array models{
     ResponseModel{"linear-impulse", &linear_impulse::resolve, &projection::correct},
     ResponseModel{"angular-impulse", &angular_impulse::resolve, &projection::correct},
     ResponseModel{"angular-impulse-one-by-one", &resolve_points_one_by_one, &projection::correct},
+    // Every contact of a step solved together (the world's contact solver calls the steps).
+    ResponseModel{"resting-contact", nullptr, nullptr, &resting_contact::hooks},
 };
 }  // namespace
 

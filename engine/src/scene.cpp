@@ -363,6 +363,30 @@ PositionCorrection read_position_correction(const Reader& root) {
     return result;
 }
 
+/// The contact solver's knobs (chapter 5): whole numbers of passes, warm starting, friction.
+ContactSolverSettings read_contact_solver(const Reader& root) {
+    const Reader knobs(root.required("contact_solver"), "contact_solver", root.file());
+    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "friction", "tolerance", "bounce_threshold"});
+    ContactSolverSettings result;
+    auto passes = [&](const char* key, int fallback) {
+        const double v = knobs.number_or(key, fallback);
+        if (!(v >= 0.0 && v <= 10000.0 && v == std::floor(v)))
+            knobs.fail(knobs.field(key), "must be a whole number from 0 to 10000, got " + Reader::format(v));
+        return static_cast<int>(v);
+    };
+    result.velocity_iterations = passes("velocity_iterations", result.velocity_iterations);
+    result.position_iterations = passes("position_iterations", result.position_iterations);
+    result.warm_start = knobs.boolean_or("warm_start", result.warm_start);
+    result.friction = knobs.number_or("friction", result.friction);
+    if (result.friction < 0.0) knobs.fail(knobs.field("friction"), "must be zero or positive, got " + Reader::format(result.friction));
+    result.tolerance = knobs.number_or("tolerance", result.tolerance);
+    if (!(result.tolerance > 0.0)) knobs.fail(knobs.field("tolerance"), "must be positive, got " + Reader::format(result.tolerance));
+    result.bounce_threshold = knobs.number_or("bounce_threshold", result.bounce_threshold);
+    if (result.bounce_threshold < 0.0)
+        knobs.fail(knobs.field("bounce_threshold"), "must be zero or positive, got " + Reader::format(result.bounce_threshold));
+    return result;
+}
+
 /// The optional "sweep": {"fraction": [b1, b2, ...]}, each value a valid fraction.
 std::vector<double> read_fraction_sweep(const Reader& root) {
     const Reader sweep(root.required("sweep"), "sweep", root.file());
@@ -464,7 +488,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
 
     const Reader root(document, "", source);
     root.only_keys({"title", "description", "responder", "time_step", "duration", "gravity", "integrator",
-                    "position_correction", "sweep", "bodies", "contact_timing", "swept_spheres"});
+                    "position_correction", "sweep", "bodies", "contact_timing", "swept_spheres", "contact_solver"});
 
     Scene scene;
     scene.title = root.text("title");
@@ -496,6 +520,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
 
     if (root.has("position_correction")) scene.settings.position_correction = read_position_correction(root);
     if (root.has("sweep")) scene.fraction_sweep = read_fraction_sweep(root);
+    if (root.has("contact_solver")) scene.settings.contact_solver = read_contact_solver(root);
 
     const json& bodies = root.required("bodies");
     if (!bodies.is_array() || bodies.empty()) root.fail("bodies", "must be a non-empty array of bodies");

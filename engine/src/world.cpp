@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "workbook/detection.hpp"
@@ -15,6 +17,9 @@ namespace workbook {
 
 World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseModel model)
     : bodies_(std::move(bodies)), settings_(settings), model_(model) {
+    if (model_.contact_solver != nullptr && settings_.contact_timing == ContactTiming::event)
+        throw std::invalid_argument("responder '" + std::string(model_.name) +
+                                    "' solves all contacts of a step together and needs discrete contact timing");
     for (RigidBody& body : bodies_) body.update_world_inertia();
     // Contacts are stored in proportion to the contacts there are: room for one per body up
     // front (a resting pile has about one per body, the gas of bench/ 1.5% of one), then
@@ -47,8 +52,12 @@ void World::step() {
     } else {
         integrate();  // 1. gravity, then positions and orientations
         detect();     // 2. overlapping pairs, and the swept test of fast spheres
-        respond();    // 3. the model's velocity responder, once per contact
-        correct();    // 4. the model's position corrector, once per contact
+        if (model_.contact_solver != nullptr) {
+            solve_contacts();  // 3 and 4 together: every contact of the step, solved at once
+        } else {
+            respond();  // 3. the model's velocity responder, once per contact
+            correct();  // 4. the model's position corrector, once per contact
+        }
     }
     ++steps_;
     time_ += settings_.time_step;
@@ -272,6 +281,26 @@ void World::correct() {
     if (!(correct_contacts() == 0.0)) guard("correct");
 }
 
+void World::solve_contacts() {
+    solver_report_ = {};
+    response_energy_change_ = 0.0;
+    if (model_.contact_solver == nullptr) return;
+    const bool probe = shortcuts_.response_energy_probe;
+    double before = 0.0;
+    if (probe)
+        for (const RigidBody& body : bodies_) before += kinetic_energy(body);
+    solver_report_ = contact_solver_.solve(bodies_, contacts_, *model_.contact_solver, settings_.contact_solver,
+                                           settings_.position_correction, settings_.time_step, -settings_.gravity);
+    double after = 0.0;
+    double sum = 0.0;
+    for (const RigidBody& body : bodies_) {
+        if (probe) after += kinetic_energy(body);
+        sum += poison(body);
+    }
+    response_energy_change_ = after - before;
+    if (!(sum == 0.0)) guard("solve contacts");
+}
+
 double World::correct_contacts() {
     if (model_.correct == nullptr) return 0.0;
     double sum = 0.0;
@@ -340,6 +369,15 @@ std::vector<StageUse> World::plan() const {
               radius + " m (the smallest radius), against the candidates " + (grid ? "the grid finds" : "of every body");
     }
     stages.push_back({"detect: swept test", swept, why});
+    if (model_.contact_solver != nullptr) {
+        const ContactSolverSettings& solver = settings_.contact_solver;
+        stages.push_back({"solve contacts", true,
+                          "responder '" + std::string(model_.name) + "': all contacts together, up to " +
+                              std::to_string(solver.velocity_iterations) + " velocity and " +
+                              std::to_string(solver.position_iterations) + " position passes" +
+                              (solver.warm_start ? ", warm started" : ", not warm started")});
+        return stages;
+    }
     stages.push_back({"respond", model_.respond != nullptr,
                       model_.respond != nullptr ? "responder '" + std::string(model_.name) + "'" : "the model has no velocity responder"});
     stages.push_back({"respond: energy probe", model_.respond != nullptr && shortcuts_.response_energy_probe,

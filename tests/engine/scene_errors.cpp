@@ -91,7 +91,7 @@ TEST_CASE("unknown keys are named with their full path", "[scene][errors]") {
         check_parts(error_from(scene_with(R"("time_step": 0.01, "duration": 1, "gravty": [0, -9.81, 0], )", valid_ball)),
                     "gravty",
                     "unknown key (allowed here: title, description, responder, time_step, duration, gravity, integrator, "
-                    "position_correction, sweep, bodies, contact_timing, swept_spheres)");
+                    "position_correction, sweep, bodies, contact_timing, swept_spheres, contact_solver)");
     }
     SECTION("in a body") {
         check_parts(error_from(scene_with_second_body(
@@ -377,4 +377,22 @@ TEST_CASE("a value nested absurdly deep is refused by its path, without walking 
     const SceneError flat = error_from(scene_with_second_body(
         R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "position": [1, 2]})"));
     CHECK(flat.problem() == "must be an array of three numbers [x, y, z], got [1,2]");
+}
+
+TEST_CASE("the contact solver's knobs are checked", "[scene][errors]") {
+    const std::string start = R"({"title": "t", "responder": "none", "time_step": 0.01, "duration": 1,
+        "bodies": [{"shape": {"type": "sphere", "radius": 1}, "mass": 1, "position": [0, 0, 0]}], "contact_solver": )";
+    auto problem = [&](const std::string& knobs) {
+        try {
+            (void)workbook::parse_scene(start + knobs + "}", "bad.json");
+        } catch (const workbook::SceneError& error) {
+            return error.field() + ": " + error.problem();
+        }
+        return std::string("no error");
+    };
+    CHECK(problem(R"({"velocity_iterations": 2.5})") == "contact_solver.velocity_iterations: must be a whole number from 0 to 10000, got 2.5");
+    CHECK(problem(R"({"friction": -1})") == "contact_solver.friction: must be zero or positive, got -1");
+    CHECK(problem(R"({"warm_start": 1})") == "contact_solver.warm_start: must be true or false, got the number 1");
+    CHECK(problem(R"({"iterations": 5})").starts_with("contact_solver.iterations: unknown key"));
+    CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false, "friction": 0.5})") == "no error");
 }

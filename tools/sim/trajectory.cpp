@@ -58,6 +58,16 @@ void write_frame(std::ostream& out, std::size_t step, const World& world, const 
     }
 }
 
+/// The impulse of point `p` of contact `c` this step: the tally of the responder's calls, or,
+/// for a model with a contact solver (chapter 5), the point's accumulated normal impulse.
+double impulse_of(const World& world, std::size_t c, std::size_t p, bool responded) {
+    if (world.model().contact_solver != nullptr) {
+        const auto impulses = world.contact_solver().impulses();
+        return c < impulses.size() ? impulses[c].points[p].normal : 0.0;
+    }
+    return responded ? tally.impulses[c] : 0.0;
+}
+
 void write_contacts(std::ostream& out, std::size_t step, const World& world, bool responded) {
     const auto contacts = world.contacts();
     for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -67,7 +77,7 @@ void write_contacts(std::ostream& out, std::size_t step, const World& world, boo
             out << step << ',' << world.time() << ',' << contact.body1 << ',' << contact.body2 << ',' << p << ','
                 << point.position.x << ',' << point.position.y << ',' << point.position.z << ','
                 << contact.normal.x << ',' << contact.normal.y << ',' << contact.normal.z << ',' << point.penetration
-                << ',' << (responded ? tally.impulses[c] : 0.0) << '\n';
+                << ',' << impulse_of(world, c, p, responded) << '\n';
         }
     }
 }
@@ -112,7 +122,7 @@ std::vector<Probes> run_recording(const Scene& scene, const ResponseModel& model
     // The scene's world with the measuring stand-in in the responder's place; nothing else differs.
     tally = {model.respond, {}};
     World measured = make_world(scene, {model.name, model.respond != nullptr ? &measuring_responder : nullptr,
-                                        model.correct});
+                                        model.correct, model.contact_solver});
 
     bodies << trajectory_header() << '\n';
     contacts << contacts_header() << '\n';

@@ -10,6 +10,8 @@
 
 namespace workbook {
 
+struct ContactSolverHooks;  // workbook/contact_solver.hpp
+
 /// Changes the velocities of the two bodies of one contact (an impulse, or a merge).
 using VelocityResponder = void (*)(RigidBody& body1, RigidBody& body2, const Contact& contact);
 
@@ -30,6 +32,10 @@ struct ResponseModel {
     std::string_view name;                 ///< what scene files write in "responder"
     VelocityResponder respond = nullptr;  ///< velocity stage, or null
     PositionCorrector correct = nullptr;  ///< position stage, or null
+    /// When set, the world answers all contacts of a step together with the contact solver
+    /// (workbook/contact_solver.hpp, chapter 5) calling these functions, instead of `respond`
+    /// and `correct` once per contact.
+    const ContactSolverHooks* contact_solver = nullptr;
 };
 
 /// Every response model the linked chapter code provides (the reference solutions or the

@@ -13,6 +13,7 @@
 #include "workbook/broad_phase.hpp"
 #include "workbook/contact.hpp"
 #include "workbook/event_timing.hpp"
+#include "workbook/contact_solver.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
@@ -55,6 +56,8 @@ struct WorldSettings {
     /// Stop with NonFiniteState (workbook/guards.hpp) when a stage leaves a NaN or an infinity
     /// in a body. On by default; benchmarks turn it off.
     bool check_finite = true;
+    /// Iterations and warm starting of the contact solver, for models that have one.
+    ContactSolverSettings contact_solver{};
 };
 
 /// Work a step leaves out when a scene does not need it. Each shortcut gives exactly the
@@ -101,6 +104,9 @@ struct StageUse {
 ///  3. respond():   the model's velocity responder, once per contact;
 ///  4. correct():   the model's position corrector, once per contact.
 ///
+/// A model with a contact solver (chapter 5) replaces stages 3 and 4 by one,
+/// solve_contacts(): every contact of the step solved together, velocities then overlap.
+///
 /// Storage is sized when the world is built; after the first step no stage allocates.
 class World {
 public:
@@ -122,6 +128,12 @@ public:
     void detect();
     void respond();    ///< stage 3: the model's velocity responder, once per contact
     void correct();    ///< stage 4: the model's position corrector, once per contact
+    /// Stages 3 and 4 for a model with a contact solver: all contacts of the step together.
+    void solve_contacts();
+    /// What the last solve_contacts() did (all zero for models without a contact solver).
+    [[nodiscard]] const ContactSolverReport& contact_solver_report() const { return solver_report_; }
+    /// The contact solver, with the impulses of its last solve.
+    [[nodiscard]] const ContactSolver& contact_solver() const { return contact_solver_; }
 
     /// Simulated time since the start, s.
     [[nodiscard]] double time() const { return time_; }
@@ -205,6 +217,8 @@ private:
     double response_energy_change_ = 0.0;
     std::vector<std::string> body_names_;
     std::uint64_t steps_ = 0;
+    ContactSolver contact_solver_;
+    ContactSolverReport solver_report_;
 };
 
 }  // namespace workbook

@@ -1,0 +1,53 @@
+#pragma once
+// The pile of chapter 5, the scene `./workbook bench pile` runs: N frictionless discs
+// (spheres in z = 0) of radius 0.05 m and mass 1 kg, e = 0, dropped from a loose grid into a
+// box of ground (y = 0) and two walls of inner width sqrt(N) x 0.1 m, g = 9.81 m/s^2 down,
+// time step 1/60 s. Keeping its definition in one place makes the engines' numbers comparable.
+
+#include <cstdint>
+#include <vector>
+
+namespace workbook::bench {
+
+struct Pile {
+    static constexpr double radius = 0.05;         ///< m
+    static constexpr double mass = 1.0;            ///< kg
+    static constexpr double gravity = 9.81;        ///< m/s^2, along -y
+    static constexpr double time_step = 1.0 / 60;  ///< s
+    double width = 0.0;                            ///< inner width, m; the walls are at x = +-width/2
+    std::vector<double> x, y;                      ///< start centres, m; at rest
+};
+
+/// The pile of `count` discs: rows of discs 2.4 radii apart (columns as many as fit the
+/// width), the lowest a radius above the ground, each moved sideways by up to 0.1 radius
+/// (the same pseudo-random numbers for every engine) so that the columns do not stay columns.
+Pile make_pile(std::uint32_t count);
+
+/// What one engine reports after running the pile.
+struct PileResult {
+    double seconds = 0.0;         ///< processor time of the steps, s
+    double deepest = 0.0;         ///< deepest overlap of two discs or of a disc and the box at the end, m
+    double kinetic = 0.0;         ///< kinetic energy at the end, J
+    double mean_height = 0.0;     ///< mean height of the centres at the end, m
+    std::uint32_t outside = 0;    ///< discs whose centre is not inside the box at the end
+};
+
+/// Measures positions and velocities of discs at the end of a run, the same way for every engine.
+PileResult measure_pile(const Pile& pile, const std::vector<double>& x, const std::vector<double>& y,
+                        const std::vector<double>& vx, const std::vector<double>& vy);
+
+/// The workbook's knobs for the pile (the defaults are what `resting-contact` scenes use).
+struct PileKnobs {
+    int velocity_iterations = 100;
+    int position_iterations = 100;
+    bool warm_start = true;
+    double fraction = 0.5;  ///< share of the overlap beyond the slop removed per step
+    double slop = 0.002;    ///< m
+    bool swept = true;      ///< the swept test of fast spheres (WorldSettings::swept_spheres)
+    double tolerance = 1e-9;  ///< m/s, ContactSolverSettings::tolerance
+};
+
+/// Runs the pile in the workbook with chapter 5's responder (the reference solution).
+PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs = {});
+
+}  // namespace workbook::bench

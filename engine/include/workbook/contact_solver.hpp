@@ -1,0 +1,144 @@
+#pragma once
+/// \file
+/// Solving every contact of a step together (chapter 5, resting contact): the data the solver
+/// keeps per contact point, its settings, and the hooks through which the world calls the
+/// chapter's functions.
+///
+/// One pass of impulses, one contact after another, is exact for a single contact and wrong
+/// for a stack: pushing the top box up off the second pushes the second down into the third.
+/// The solver here goes over all contacts again and again (sequential impulses), keeping per
+/// point the impulse accumulated so far within the step and only that sum non-negative, so
+/// that a later pass can take back what an earlier one gave too much. Overlap is removed in a
+/// second, separate pass on pseudo-velocities (split impulse): they move the bodies and are
+/// then thrown away, so removing overlap never adds kinetic energy.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "workbook/contact.hpp"
+#include "workbook/response_model.hpp"
+#include "workbook/rigid_body.hpp"
+
+namespace workbook {
+
+/// What the solver keeps of one point of one contact, within a step and (the two impulses)
+/// from one step to the next.
+struct PointImpulse {
+    double mass = 0.0;     ///< 1 / k, kg: the impulse that changes the point's normal velocity by 1 m/s (0: nothing moves)
+    double bounce = 0.0;   ///< normal relative velocity the velocity pass aims for, m/s (restitution; 0 at rest)
+    double bias = 0.0;     ///< normal pseudo-velocity the position pass aims for, m/s: the overlap to remove / dt
+    double normal = 0.0;   ///< impulse accumulated along +n on body 1 this step, kg m/s; kept >= 0
+    double pseudo = 0.0;   ///< pseudo-impulse accumulated by the position pass this step, kg m/s; kept >= 0
+    /// Friction impulse accumulated along the two tangents of friction_tangents(), kg m/s;
+    /// its length kept <= the friction coefficient times `normal`.
+    std::array<double, 2> friction{};
+};
+
+/// Two unit vectors that with `normal` make a right-handed orthonormal frame (n, t1, t2):
+/// the directions friction acts along. The same normal always gives the same pair.
+std::array<Vector3, 2> friction_tangents(const Vector3& normal);
+
+/// The solver's numbers for every point of one contact (the first `point_count` of the contact).
+struct ContactImpulses {
+    std::array<PointImpulse, max_contact_points> points{};
+};
+
+/// How the contact solver works; the defaults are the ones measured on the pile of discs.
+struct ContactSolverSettings {
+    int velocity_iterations = 100;  ///< most passes over all contacts for the velocities
+    int position_iterations = 100;  ///< most passes over all contacts for the overlap
+    /// A pass that changes no point's normal velocity by more than this (m/s) ends the loop
+    /// early: nothing approaches any more (to this tolerance).
+    double tolerance = 1e-9;
+    /// Start each step from the impulses the same points needed in the last step.
+    bool warm_start = true;
+    /// Coulomb friction coefficient of every contact (0: frictionless, as the pile of discs).
+    double friction = 0.0;
+    /// A point that approaches slower than this (m/s) gets no bounce: resting bodies would
+    /// otherwise bounce on gravity's own speed of one step (g dt = 0.16 m/s at 60 Hz).
+    double bounce_threshold = 0.5;
+    /// Old and new points of the same pair are the same point (for warm starting) when they
+    /// lie closer than this, m.
+    double match_distance = 0.01;
+    /// Most overlap a point's bias asks to remove in one step, m: a deep overlap pushed out at
+    /// once would push bodies through their neighbours.
+    double max_push = 0.005;
+};
+
+/// The chapter's functions the solver calls (see chapters/resting-contact). Each works on one
+/// contact of two bodies, so that the student's copy can be called across the grader's wire.
+struct ContactSolverHooks {
+    /// Fills mass, bounce and bias of every point (the impulses are left as the world set them).
+    void (*prepare)(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+                    const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt) = nullptr;
+    /// Applies the accumulated normal impulses (the last step's, for warm starting).
+    void (*warm_start)(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) = nullptr;
+    /// One pass over the contact's points for the velocities; returns the largest change of a
+    /// point's normal velocity, m/s.
+    double (*solve_velocity)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
+    /// One pass over the contact's points for friction (called after solve_velocity when the
+    /// friction coefficient is not 0); returns the largest change of a point's tangent velocity, m/s.
+    double (*solve_friction)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+                             double friction) = nullptr;
+    /// One pass over the contact's points for the overlap, on bodies whose velocities are the
+    /// pseudo-velocities; returns the largest change of a point's normal pseudo-velocity, m/s.
+    double (*solve_position)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
+};
+
+/// What one solve did, for probes, figures and the iterations-against-accuracy study.
+struct ContactSolverReport {
+    int velocity_passes = 0;  ///< passes the velocity loop ran
+    int position_passes = 0;  ///< passes the position loop ran
+    double velocity_residual = 0.0;  ///< the last velocity pass's largest change, m/s
+    double position_residual = 0.0;  ///< the last position pass's largest change, m/s
+    std::size_t warm_started_points = 0;  ///< points that found their last step's impulse
+};
+
+/// The solver: holds what it remembers between steps (the impulses of last step's contact
+/// points) and its scratch, sized once and reused, so a warm step allocates nothing.
+class ContactSolver {
+public:
+    /// Solves every contact of `contacts` on `bodies` with the chapter's `hooks`, `up` pointing
+    /// against gravity (any direction without gravity):
+    ///  1. prepare each contact (masses, bounce and bias), warm start from the last step;
+    ///  2. up to velocity_iterations passes over all contacts, until nothing approaches;
+    ///     the change of velocity also moves each body over this step (as if the solve had
+    ///     come before the move), and each point's depth is estimated after that move;
+    ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
+    ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
+    ContactSolverReport solve(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                              const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
+                              const Vector3& up);
+
+    /// The impulses of the last solve, one per contact, in the contacts' order.
+    [[nodiscard]] std::span<const ContactImpulses> impulses() const { return impulses_; }
+
+    /// Forgets the impulses remembered for warm starting.
+    void forget() { previous_.clear(); }
+
+private:
+    /// One remembered contact: its pair, normal, points and their impulses.
+    struct Remembered {
+        std::uint64_t pair = 0;
+        Vector3 normal{};
+        std::array<Vector3, max_contact_points> positions{};
+        std::array<double, max_contact_points> normal_impulses{};
+        std::array<std::array<double, 2>, max_contact_points> friction_impulses{};
+        std::uint8_t point_count = 0;
+    };
+    void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
+    void remember(std::span<const Contact> contacts);
+
+    std::vector<ContactImpulses> impulses_;
+    std::vector<Contact> adjusted_;
+    std::vector<std::uint32_t> order_;  ///< the contacts in the order of the passes
+    std::vector<double> height_;        ///< each contact's height along `up`, for the order  ///< the contacts with each point's depth after the velocity solve's move
+    std::vector<Remembered> previous_;
+    std::vector<Remembered> current_;
+    std::vector<Vector3> saved_velocity_;
+    std::vector<Vector3> saved_angular_velocity_;
+};
+
+}  // namespace workbook

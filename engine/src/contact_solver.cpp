@@ -1,0 +1,214 @@
+#include "workbook/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace workbook {
+
+namespace {
+
+std::uint64_t pair_key(const Contact& contact) {
+    return (static_cast<std::uint64_t>(contact.body1) << 32) | contact.body2;
+}
+
+/// Turns `body` by the small rotation `turn` (rad, world frame): q += 1/2 (turn, 0) q, then
+/// renormalised, and its world inertia brought up to date.
+void turn_by(RigidBody& body, const Vector3& turn) {
+    const Quaternion& q = body.orientation;
+    const Quaternion spin{0.0, turn.x, turn.y, turn.z};
+    const Quaternion dq = spin * q;
+    body.orientation = normalized(Quaternion{q.w + 0.5 * dq.w, q.x + 0.5 * dq.x, q.y + 0.5 * dq.y, q.z + 0.5 * dq.z});
+    body.update_world_inertia();
+}
+
+}  // namespace
+
+std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
+    // Cross the normal with the axis it is least aligned with: never a short vector.
+    const double ax = std::abs(normal.x), ay = std::abs(normal.y), az = std::abs(normal.z);
+    const Vector3 axis = ax <= ay && ax <= az ? Vector3{1, 0, 0} : ay <= az ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+    const Vector3 t1 = normalized(cross(normal, axis));
+    return {t1, cross(normal, t1)};
+}
+
+void ContactSolver::recall(std::span<const Contact> contacts, const ContactSolverSettings& settings,
+                           ContactSolverReport& report) {
+    const double reach2 = settings.match_distance * settings.match_distance;
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const Contact& contact = contacts[c];
+        ContactImpulses& impulses = impulses_[c];
+        if (!settings.warm_start || previous_.empty()) continue;
+        const auto found = std::ranges::lower_bound(previous_, pair_key(contact), {}, &Remembered::pair);
+        if (found == previous_.end() || found->pair != pair_key(contact)) continue;
+        // A pair whose normal turned a lot (two balls that passed each other) starts afresh.
+        if (dot(found->normal, contact.normal) < 0.9) continue;
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            double nearest = reach2;
+            for (std::size_t k = 0; k < found->point_count; ++k) {
+                const Vector3 d = contact.points[i].position - found->positions[k];
+                const double d2 = dot(d, d);
+                if (d2 < nearest) {
+                    nearest = d2;
+                    impulses.points[i].normal = found->normal_impulses[k];
+                    impulses.points[i].friction = found->friction_impulses[k];
+                }
+            }
+            if (nearest < reach2) ++report.warm_started_points;
+        }
+    }
+}
+
+void ContactSolver::remember(std::span<const Contact> contacts) {
+    current_.clear();
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const Contact& contact = contacts[c];
+        Remembered& r = current_.emplace_back();
+        r.pair = pair_key(contact);
+        r.normal = contact.normal;
+        r.point_count = contact.point_count;
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            r.positions[i] = contact.points[i].position;
+            r.normal_impulses[i] = impulses_[c].points[i].normal;
+            r.friction_impulses[i] = impulses_[c].points[i].friction;
+        }
+    }
+    std::ranges::sort(current_, {}, &Remembered::pair);
+    std::swap(previous_, current_);
+}
+
+ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
+                                         const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
+                                         const PositionCorrection& knobs, double dt, const Vector3& up) {
+    ContactSolverReport report;
+    impulses_.assign(contacts.size(), ContactImpulses{});
+    recall(contacts, settings, report);
+
+    // The velocities before the solve: its change of them also moves the bodies (below).
+    saved_velocity_.resize(bodies.size());
+    saved_angular_velocity_.resize(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        saved_velocity_[b] = bodies[b].velocity;
+        saved_angular_velocity_[b] = bodies[b].angular_velocity;
+    }
+
+    // The order of the passes: from the bottom up against gravity, by the height of each
+    // contact's points, so that the weight of a stack reaches the ground in the first pass
+    // (the ground's contact under a ball comes before the contact on top of that ball). Ties
+    // keep detection's order.
+    order_.resize(contacts.size());
+    height_.resize(contacts.size());
+    for (std::uint32_t c = 0; c < contacts.size(); ++c) {
+        order_[c] = c;
+        double sum = 0.0;
+        for (std::size_t i = 0; i < contacts[c].point_count; ++i) sum += dot(contacts[c].points[i].position, up);
+        height_[c] = contacts[c].point_count > 0 ? sum / contacts[c].point_count : 0.0;
+    }
+    // Ties broken by index: the order of a stable sort, without the buffer std::stable_sort
+    // allocates (a warm step allocates nothing).
+    std::ranges::sort(order_, [&](std::uint32_t a, std::uint32_t b) {
+        return height_[a] < height_[b] || (height_[a] == height_[b] && a < b);
+    });
+
+    // 1. What each point aims for, computed once from the velocities before any impulse.
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const Contact& contact = contacts[c];
+        hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
+    }
+    if (settings.warm_start) {
+        for (std::size_t c = 0; c < contacts.size(); ++c) {
+            const Contact& contact = contacts[c];
+            hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
+        }
+    }
+
+    // 2. Sequential impulses over all contacts until no point's velocity changes any more.
+    for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
+        double largest = 0.0;
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            const std::uint32_t c = order_[k];
+            const Contact& contact = contacts[c];
+            largest = std::max(largest, hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
+            if (settings.friction > 0.0 && hooks.solve_friction != nullptr)
+                largest = std::max(largest, hooks.solve_friction(bodies[contact.body1], bodies[contact.body2], contact,
+                                                                 impulses_[c], settings.friction));
+        }
+        report.velocity_passes = pass + 1;
+        report.velocity_residual = largest;
+        if (!(largest > settings.tolerance)) break;
+    }
+
+    // The move of this step used the velocities before the solve; the solve's change of them
+    // belongs to this step too (as when the solve comes before the move, the order of Box2D
+    // and Chipmunk): each body moves by that change times dt, and each point's depth is
+    // estimated after that move. A resting stack then does not sink by g dt^2 a step.
+    adjusted_.assign(contacts.begin(), contacts.end());
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        Contact& contact = adjusted_[c];
+        const RigidBody& body1 = bodies[contact.body1];
+        const RigidBody& body2 = bodies[contact.body2];
+        const Vector3 dv1 = body1.velocity - saved_velocity_[contact.body1], dw1 = body1.angular_velocity - saved_angular_velocity_[contact.body1];
+        const Vector3 dv2 = body2.velocity - saved_velocity_[contact.body2], dw2 = body2.angular_velocity - saved_angular_velocity_[contact.body2];
+        contact.penetration = 0.0;
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            ContactPoint& point = contact.points[i];
+            const Vector3 change1 = dv1 + cross(dw1, point.position - body1.position);
+            const Vector3 change2 = dv2 + cross(dw2, point.position - body2.position);
+            point.penetration = std::max(point.penetration - dot(change1 - change2, contact.normal) * dt, 0.0);
+            // The point moves with the bodies (halfway between the two material points), so
+            // that its lever arms stay those of the contact: a ball's along the normal.
+            const Vector3 shift = body1.is_immovable() ? change2 : body2.is_immovable() ? change1 : 0.5 * (change1 + change2);
+            point.position += shift * dt;
+            contact.penetration = std::max(contact.penetration, point.penetration);
+        }
+    }
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        RigidBody& body = bodies[b];
+        if (body.is_immovable()) continue;
+        const Vector3 dv = body.velocity - saved_velocity_[b], dw = body.angular_velocity - saved_angular_velocity_[b];
+        if (dv != Vector3{}) body.position += dv * dt;
+        if (dw != Vector3{}) turn_by(body, dw * dt);
+    }
+
+    // 3. The overlap, on pseudo-velocities: every body swaps its velocities for zero ones, the
+    // position passes push those apart, the bodies move by them over dt, and the real
+    // velocities come back untouched. Kinetic energy cannot change here.
+    for (std::size_t c = 0; c < adjusted_.size(); ++c) {
+        const Contact& contact = adjusted_[c];
+        hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
+    }
+    bool any_bias = false;
+    for (std::size_t c = 0; c < contacts.size() && !any_bias; ++c)
+        for (std::size_t i = 0; i < contacts[c].point_count; ++i) any_bias = any_bias || impulses_[c].points[i].bias > 0.0;
+    if (any_bias && settings.position_iterations > 0) {
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            saved_velocity_[b] = bodies[b].velocity;
+            saved_angular_velocity_[b] = bodies[b].angular_velocity;
+            bodies[b].velocity = bodies[b].angular_velocity = Vector3{};
+        }
+        for (int pass = 0; pass < settings.position_iterations; ++pass) {
+            double largest = 0.0;
+            for (std::size_t k = 0; k < order_.size(); ++k) {
+                const std::uint32_t c = order_[k];
+                const Contact& contact = adjusted_[c];
+                largest =
+                    std::max(largest, hooks.solve_position(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
+            }
+            report.position_passes = pass + 1;
+            report.position_residual = largest;
+            if (!(largest > settings.tolerance)) break;
+        }
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            RigidBody& body = bodies[b];
+            if (!body.is_immovable()) {
+                if (body.velocity != Vector3{}) body.position += body.velocity * dt;
+                if (body.angular_velocity != Vector3{}) turn_by(body, body.angular_velocity * dt);
+            }
+            body.velocity = saved_velocity_[b];
+            body.angular_velocity = saved_angular_velocity_[b];
+        }
+    }
+    remember(contacts);
+    return report;
+}
+
+}  // namespace workbook

@@ -1,0 +1,135 @@
+// Reference solution for chapter 5, resting contact.
+#include "resting-contact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "workbook/restitution.hpp"
+
+namespace workbook::resting_contact {
+
+// The solver calls these in its inner loop, many times a step: they read the world inverse
+// inertia the world keeps current (RigidBody::inverse_inertia_world) instead of computing it
+// again from the orientation as chapter 4's steps do; the numbers are the same.
+namespace {
+
+Vector3 point_velocity(const RigidBody& body, const Vector3& point) {
+    return body.velocity + cross(body.angular_velocity, point - body.position);
+}
+
+double normal_velocity(const RigidBody& body1, const RigidBody& body2, const Vector3& point, const Vector3& normal) {
+    return dot(point_velocity(body1, point) - point_velocity(body2, point), normal);
+}
+
+void apply_impulse(RigidBody& body1, RigidBody& body2, const Vector3& point, const Vector3& impulse) {
+    body1.velocity += body1.inverse_mass * impulse;
+    body1.angular_velocity += body1.inverse_inertia_world * cross(point - body1.position, impulse);
+    body2.velocity -= body2.inverse_mass * impulse;
+    body2.angular_velocity -= body2.inverse_inertia_world * cross(point - body2.position, impulse);
+}
+
+}  // namespace
+
+double normal_mass(const RigidBody& body1, const RigidBody& body2, const Vector3& point, const Vector3& normal) {
+    // k = 1/m1 + 1/m2 + n . ((I1^-1 (r1 x n)) x r1 + (I2^-1 (r2 x n)) x r2), chapter 4's denominator.
+    const Vector3 r1 = point - body1.position;
+    const Vector3 r2 = point - body2.position;
+    const Vector3 turn1 = cross(body1.inverse_inertia_world * cross(r1, normal), r1);
+    const Vector3 turn2 = cross(body2.inverse_inertia_world * cross(r2, normal), r2);
+    const double k = body1.inverse_mass + body2.inverse_mass + dot(normal, turn1 + turn2);
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+double accumulate(double& accumulated, double increment) {
+    // Clamp the running sum, not the increment: a later pass may take back what an earlier
+    // one gave too much, as long as the contact never ends up pulling.
+    const double before = accumulated;
+    accumulated = std::max(before + increment, 0.0);
+    return accumulated - before;
+}
+
+namespace {
+
+/// One pass over the points towards `target`, summing into `sum`; the largest change of a
+/// point's normal velocity.
+double pass(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+            double PointImpulse::*target, double PointImpulse::*sum) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        PointImpulse& p = impulses.points[i];
+        if (p.mass == 0.0) continue;
+        const Vector3& at = contact.points[i].position;
+        const double u = normal_velocity(body1, body2, at, contact.normal);
+        const double applied = accumulate(p.*sum, p.mass * (p.*target - u));
+        if (applied == 0.0) continue;
+        apply_impulse(body1, body2, at, applied * contact.normal);
+        largest = std::max(largest, std::abs(applied) / p.mass);
+    }
+    return largest;
+}
+
+}  // namespace
+
+void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+             const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt) {
+    const double e = combined_restitution(body1, body2);
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        PointImpulse& p = impulses.points[i];
+        const ContactPoint& point = contact.points[i];
+        p.mass = normal_mass(body1, body2, point.position, contact.normal);
+        const double u = normal_velocity(body1, body2, point.position, contact.normal);
+        p.bounce = u < -settings.bounce_threshold ? -e * u : 0.0;
+        p.bias = std::min(knobs.fraction * std::max(point.penetration - knobs.slop, 0.0), settings.max_push) / dt;
+        p.pseudo = 0.0;
+    }
+}
+
+void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) {
+    const auto [t1, t2] = friction_tangents(contact.normal);
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        const PointImpulse& p = impulses.points[i];
+        const Vector3 j = p.normal * contact.normal + p.friction[0] * t1 + p.friction[1] * t2;
+        if (j != Vector3{}) apply_impulse(body1, body2, contact.points[i].position, j);
+    }
+}
+
+double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
+                      double friction) {
+    const std::array<Vector3, 2> t = friction_tangents(contact.normal);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        PointImpulse& p = impulses.points[i];
+        const Vector3& at = contact.points[i].position;
+        const Vector3 slip = point_velocity(body1, at) - point_velocity(body2, at);
+        const std::array<double, 2> before = p.friction;
+        for (std::size_t d = 0; d < 2; ++d) {
+            const double mass = normal_mass(body1, body2, at, t[d]);
+            p.friction[d] -= mass * dot(slip, t[d]);
+        }
+        // Coulomb: the friction impulse can be no larger than mu times the normal impulse.
+        const double limit = friction * p.normal;
+        const double size = std::hypot(p.friction[0], p.friction[1]);
+        if (size > limit) {
+            const double scale = size > 0.0 ? limit / size : 0.0;
+            p.friction[0] *= scale;
+            p.friction[1] *= scale;
+        }
+        const Vector3 applied = (p.friction[0] - before[0]) * t[0] + (p.friction[1] - before[1]) * t[1];
+        if (applied == Vector3{}) continue;
+        apply_impulse(body1, body2, at, applied);
+        const Vector3 after = point_velocity(body1, at) - point_velocity(body2, at);
+        largest = std::max(largest, length((after - slip) - dot(after - slip, contact.normal) * contact.normal));
+    }
+    return largest;
+}
+
+double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
+    return pass(body1, body2, contact, impulses, &PointImpulse::bounce, &PointImpulse::normal);
+}
+
+double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
+    return pass(body1, body2, contact, impulses, &PointImpulse::bias, &PointImpulse::pseudo);
+}
+
+}  // namespace workbook::resting_contact
