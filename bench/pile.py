@@ -3,7 +3,7 @@
 in the workbook for each N and writes a CSV and a Markdown table of time per step, deepest
 overlap, kinetic energy, mean height and discs outside the box.
 
-Usage: bench/pile.py --binary build/dev/bench/workbook-pile [--counts 400 1000 2000] [--out bench/results]
+Usage: python3 -m bench.pile --binary build/dev/bench/workbook-pile [--counts 400 1000 2000] [--out bench/results]
 
 The workbook alone for now: the peers (Chipmunk, Box2D, Bullet, as bench/speed.py runs them
 for the gas) are still to be added to workbook-pile.

@@ -59,9 +59,19 @@ def trajectory_path(scene):
     return folder(chapter) / f"{scene.stem}.trajectory.csv"
 
 
+# The motion of a scene is shipped when its bodies times its seconds stay within this: the
+# chapters' small scenes (at most 28 body-seconds today), not the piles and the minute-long
+# stacks of chapter 5, whose motion would weigh tens of megabytes. A student's strobe picture
+# of those has no reference under it and keeps the bodies' own colours.
+SHIPPED_BODY_SECONDS = 100
+
+
 def has_trajectory(scene):
-    """True for a scene whose motion the student's code decides (not a free spin)."""
-    return spin.watched_body(json.loads(scene.read_text())) is None
+    """True for a scene whose motion the student's code decides (not a free spin) and that is
+    small enough to ship."""
+    spec = json.loads(scene.read_text())
+    small = len(spec.get("bodies", [])) * float(spec.get("duration", 0)) <= SHIPPED_BODY_SECONDS
+    return small and spin.watched_body(spec) is None
 
 
 def rounded(path, digits):

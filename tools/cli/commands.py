@@ -410,7 +410,7 @@ def _(parser):
     parser.add_argument("--responder", metavar="NAME", help="run the corpus with this responder only")
 
 
-BENCH_KINDS = ("accuracy", "speed", "stages")
+BENCH_KINDS = ("accuracy", "speed", "stages", "pile")
 
 
 @command("bench", "Speed and accuracy",
@@ -428,12 +428,15 @@ BENCH_KINDS = ("accuracy", "speed", "stages")
          "again from the last run's CSV. `./workbook bench speed --help` lists its options.\n\n"
          "stages [Google Benchmark options]: micro benchmarks of each stage of a step (integrate, detect, "
          "respond, probes).\n\n"
+         "pile [options of bench/pile.py]: chapter 5's pile of frictionless discs dropped into a box, 10 s, for "
+         "N = 400 to 10,000: time per step, deepest overlap, kinetic energy, mean height and discs outside, in "
+         "build/dev/book/bench/pile.{csv,md} (the workbook alone so far).\n\n"
          "Each installs libbenchmark-dev and the peers' Debian packages first (with apt) and builds with those "
          "found; a peer that is missing is a row that says so. Never part of ./workbook test.",
          listed=full, refusal=NO_SOLUTIONS)
 def run_bench(args, raw):
     rest = list(args.rest)
-    if args.kind != "speed" and ("-h" in rest or "--help" in rest):
+    if args.kind not in ("speed", "pile") and ("-h" in rest or "--help" in rest):
         parser = command_parser(next(c for c in COMMANDS if c.name == "bench"))
         parser.print_help()
         return 0
@@ -462,6 +465,12 @@ def run_bench(args, raw):
         if status == 0:
             say(f"Table: {BOOK / 'bench' / 'speed.md'}; figure: {BOOK / 'figures' / 'bench' / 'speed.svg'}")
         return status
+    if args.kind == "pile":
+        if "-h" in rest or "--help" in rest:
+            return run_python("bench.pile", ["--help"])
+        building.build("dev", "workbook-pile", to_stderr=True)
+        return run_python("bench.pile", ["--binary", host.built_program(edition.build_dir("dev") / "bench", "workbook-pile"),
+                                         "--out", BOOK / "bench", *rest], cwd=edition.ROOT)
     building.prepare_bench()
     prerequisites.setup_tools()
     building.configure("dev")
@@ -482,9 +491,10 @@ def _has_target(preset, target):
 
 @run_bench.arguments
 def _(parser):
-    parser.add_argument("kind", choices=BENCH_KINDS, metavar="accuracy|speed|stages", help="which bench")
+    parser.add_argument("kind", choices=BENCH_KINDS, metavar="accuracy|speed|stages|pile", help="which bench")
     parser.add_argument("rest", nargs=argparse.REMAINDER, metavar="...",
-                        help="accuracy: the folder OUT; speed: bench/speed.py's options; stages: Google Benchmark's")
+                        help="accuracy: the folder OUT; speed: bench/speed.py's options; stages: Google Benchmark's; "
+                             "pile: bench/pile.py's options")
 
 
 # --- Instructors ----------------------------------------------------------------------------

@@ -45,9 +45,11 @@ std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, con
 /// A predicted impact of bodies i < j at time t within the step; stale once either body has
 /// taken part in a later event (its count of events no longer matches).
 struct ImpactEvent {
-    double t;
-    std::uint32_t i, j;
-    std::uint32_t events_i, events_j;  ///< the bodies' event counts when it was predicted
+    double t;                          ///< when, s from the start of the step
+    std::uint32_t i;                   ///< the first body (the smaller index)
+    std::uint32_t j;                   ///< the second body
+    std::uint32_t events_i;            ///< body i's event count when it was predicted
+    std::uint32_t events_j;            ///< body j's event count when it was predicted
 };
 
 /// What World::step_with_event_timing() keeps between steps, so that a warm step allocates nothing.
@@ -56,17 +58,19 @@ struct EventScratch {
     std::vector<double> reach;             ///< per body: how far it may move this step, m
     std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
     ProxySet proxies;                      ///< the bodies at the start of the step, widened by their reach
-    BroadPhase broad_phase;
+    BroadPhase broad_phase;                ///< finds the candidates once per step
     std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap
     std::vector<std::uint32_t> start;      ///< per body, into partners (a counting sort of pairs)
-    std::vector<std::uint32_t> partners;
+    std::vector<std::uint32_t> partners;   ///< each body's candidate partners, body after body
     std::vector<BodyPair> extra;           ///< candidates found later, for a body that outran its reach
     /// The same by body: extra_head[i] is body i's first node (or none), each node a partner.
     std::vector<std::uint32_t> extra_head;
+    /// One later candidate of a body: a node of that body's list.
     struct ExtraNode {
-        std::uint32_t partner, next;
+        std::uint32_t partner;  ///< the other body
+        std::uint32_t next;     ///< the body's next node, or none
     };
-    std::vector<ExtraNode> extra_nodes;
+    std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
     std::vector<BodyPair> all_pairs;       ///< candidates and extras, sorted, for the back-stop
     std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
