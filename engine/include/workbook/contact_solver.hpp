@@ -42,7 +42,7 @@ std::array<Vector3, 2> friction_tangents(const Vector3& normal);
 
 /// The solver's numbers for every point of one contact (the first `point_count` of the contact).
 struct ContactImpulses {
-    std::array<PointImpulse, max_contact_points> points{};
+    std::array<PointImpulse, max_contact_points> points{};  ///< one per contact point, in the contact's order
 };
 
 /// How the contact solver works; the defaults are the ones measured on the pile of discs.
