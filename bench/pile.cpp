@@ -42,7 +42,7 @@ PileResult measure_pile(const Pile& pile, const std::vector<double>& x, const st
         r.mean_height += y[i] / static_cast<double>(n);
         if (!(x[i] > -h && x[i] < h && y[i] > 0.0)) ++r.outside;
     }
-    std::ranges::sort(order, {}, [&](std::size_t i) { return x[i]; });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
     for (std::size_t a = 0; a < n; ++a)
         for (std::size_t b = a + 1; b < n && x[order[b]] - x[order[a]] < d; ++b) {
             const double dx = x[order[b]] - x[order[a]], dy = y[order[b]] - y[order[a]];

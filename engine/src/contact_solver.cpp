@@ -38,7 +38,8 @@ void ContactSolver::recall(std::span<const Contact> contacts, const ContactSolve
         const Contact& contact = contacts[c];
         ContactImpulses& impulses = impulses_[c];
         if (!settings.warm_start || previous_.empty()) continue;
-        const auto found = std::ranges::lower_bound(previous_, pair_key(contact), {}, &Remembered::pair);
+        const auto found = std::lower_bound(previous_.begin(), previous_.end(), pair_key(contact),
+                                            [](const Remembered& r, std::uint64_t key) { return r.pair < key; });
         if (found == previous_.end() || found->pair != pair_key(contact)) continue;
         // A pair whose normal turned a lot (two balls that passed each other) starts afresh.
         if (dot(found->normal, contact.normal) < 0.9) continue;
@@ -72,7 +73,7 @@ void ContactSolver::remember(std::span<const Contact> contacts) {
             r.friction_impulses[i] = impulses_[c].points[i].friction;
         }
     }
-    std::ranges::sort(current_, {}, &Remembered::pair);
+    std::sort(current_.begin(), current_.end(), [](const Remembered& a, const Remembered& b) { return a.pair < b.pair; });
     std::swap(previous_, current_);
 }
 
@@ -105,7 +106,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     }
     // Ties broken by index: the order of a stable sort, without the buffer std::stable_sort
     // allocates (a warm step allocates nothing).
-    std::ranges::sort(order_, [&](std::uint32_t a, std::uint32_t b) {
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
         return height_[a] < height_[b] || (height_[a] == height_[b] && a < b);
     });
 

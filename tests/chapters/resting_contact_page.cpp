@@ -51,7 +51,7 @@ TEST_CASE("chapter 5 worked example: one pass halves the impulses of a two-ball 
     // The ground's contact is the first in the solver's order, the balls' contact the second.
     std::vector<double> impulses;
     for (const ContactImpulses& c : one.contact_solver().impulses()) impulses.push_back(c.points[0].normal);
-    std::ranges::sort(impulses);
+    std::sort(impulses.begin(), impulses.end());
     REQUIRE(impulses.size() == 2);
     CHECK(std::abs(impulses[1] - m * s) <= 1e-15);
     CHECK(std::abs(impulses[0] - m * s / 2) <= 1e-15);

@@ -83,7 +83,7 @@ TEST_CASE("A column of balls resting on the ground: each contact carries the wei
     const double g_dt = 9.81 / 60;
     std::vector<double> carried;
     for (std::size_t c = 0; c < impulses.size(); ++c) carried.push_back(impulses[c].points[0].normal);
-    std::ranges::sort(carried);
+    std::sort(carried.begin(), carried.end());
     const double tolerance = world.settings().contact_solver.tolerance;
     REQUIRE(world.contact_solver_report().velocity_passes < world.settings().contact_solver.velocity_iterations);
     // A pass that changed no velocity by more than the tolerance leaves each contact's

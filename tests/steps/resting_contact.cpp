@@ -175,7 +175,7 @@ TEST_CASE("a column of five 1 kg balls on the ground: after the world's solve ea
     const double g_dt = 9.81 / 60;
     std::vector<double> carried;
     for (const ContactImpulses& c : world.contact_solver().impulses()) carried.push_back(c.points[0].normal);
-    std::ranges::sort(carried);
+    std::sort(carried.begin(), carried.end());
     const double tolerance = 1e-7;  // the solver stops once no pass changes a velocity by more than 1e-9 m/s
     for (std::size_t k = 0; k < carried.size(); ++k)
         expect_close(laws::stack, static_cast<double>(k + 1) * g_dt, carried[k], tolerance, "kg m/s",

@@ -119,7 +119,9 @@ public:
     void forget() { previous_.clear(); }
 
 private:
-    /// One remembered contact: its pair, normal, points and their impulses.
+    // One remembered contact: its pair, normal, points and their impulses. Kept out of the
+    // site (\cond): a private type the API reference has no page for.
+    /// \cond
     struct Remembered {
         std::uint64_t pair = 0;
         Vector3 normal{};
@@ -128,6 +130,7 @@ private:
         std::array<std::array<double, 2>, max_contact_points> friction_impulses{};
         std::uint8_t point_count = 0;
     };
+    /// \endcond
     void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
     void remember(std::span<const Contact> contacts);
 

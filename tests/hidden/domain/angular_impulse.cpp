@@ -270,7 +270,8 @@ TEST_CASE("sampled bodies, turned any way, inertia not diagonal, immovable ones 
         401, {.body2 = false, .spin = true},
         [](SeededRandom& random, Case& c) {
             const double w = inverse_mass(random);
-            c.body1 = draw_body(random, w, chance(random, 0.15));
+            const bool immovable = chance(random, 0.15);
+            c.body1 = draw_body(random, w, immovable);
             return true;
         },
         [](const Case& c) {
@@ -294,7 +295,8 @@ TEST_CASE("sampled spinning bodies, kinematic ones among them, and points anywhe
         402, {.body2 = false, .point = true, .spin = true},
         [](SeededRandom& random, Case& c) {
             const double w = inverse_mass(random);
-            c.body1 = draw_body(random, w, chance(random, 0.2));
+            const bool immovable = chance(random, 0.2);
+            c.body1 = draw_body(random, w, immovable);
             c.point = point_near(random, c.body1);
             return true;
         },

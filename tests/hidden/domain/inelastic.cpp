@@ -31,8 +31,10 @@ bool draw_pair(SeededRandom& random, Case& c, int pinned, Approach how) {
     if (!set_motion(random, c, how)) return false;
     place_pair(random, c);
     // Spinning bodies: the angular velocity is not this chapter's, and must come back as it was.
-    for (RigidBody* b : {&c.body1, &c.body2})
-        if (chance(random, 0.5)) b->angular_velocity = velocity(random);
+    for (RigidBody* b : {&c.body1, &c.body2}) {
+        const bool spins = chance(random, 0.5);
+        if (spins) b->angular_velocity = velocity(random);
+    }
     return true;
 }
 

@@ -55,7 +55,8 @@ void draw_contact(SeededRandom& random, Case& c) {
         const double depth = draw_depth(random, zero);
         c.contact.add_point(c.body1.position - c.contact.normal * (gap / 2) + side * reach, depth);
     }
-    if (chance(random, 0.2)) c.contact.penetration *= random.uniform(1.0, 2.0);
+    const bool deeper = chance(random, 0.2);
+    if (deeper) c.contact.penetration *= random.uniform(1.0, 2.0);
 }
 
 /// Two bodies with `pinned` immovable ones, moving and spinning (projection must not touch that).
