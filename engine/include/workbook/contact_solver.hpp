@@ -120,7 +120,7 @@ public:
 
 private:
     // One remembered contact: its pair, normal, points and their impulses. Kept out of the
-    // site (\cond): a private type the API reference has no page for.
+    // site: a private type the API reference has no page for.
     /// \cond
     struct Remembered {
         std::uint64_t pair = 0;
