@@ -34,6 +34,28 @@ CONTACT_COLOUR = "#B2182B"  # style.gp's c_drop: what the response did
 # A scene runs in well under a second; a student's endless loop must not hang the figures.
 SCENE_TIME_LIMIT = 120
 
+# A heavy scene: more than this many body-seconds (bodies x duration), chapter 5's pile, column,
+# pyramid and minute-long stacks; the scenes of chapters 1 to 4 have at most 28.
+HEAVY_BODY_SECONDS = 100
+# The sanitizer build (build/sanitize) runs the tests again, some 20 times slower, to catch
+# memory and undefined-behaviour errors, which a short stretch of a scene shows as well as the
+# whole: there the tests run a heavy scene's first half second only (the pile's discs have
+# landed, the stacks stand). The dev build's tests run every scene whole.
+SANITIZED_SECONDS = 0.5
+
+
+def is_heavy(spec):
+    """True for a scene of more than HEAVY_BODY_SECONDS body-seconds."""
+    return len(spec.get("bodies", [])) * float(spec.get("duration", 0)) > HEAVY_BODY_SECONDS
+
+
+def for_sanitizers(spec):
+    """The scene description as the sanitizer build's tests run it: a heavy one cut to its
+    first SANITIZED_SECONDS, any other as it is."""
+    if not is_heavy(spec):
+        return spec
+    return dict(spec, duration=min(float(spec["duration"]), SANITIZED_SECONDS))
+
 
 def quote(text):
     """A gnuplot double-quoted string; a newline becomes gnuplot's own \\n (a line break)."""

@@ -59,9 +59,8 @@ void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& cont
 
 //! [warm-start]
 void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) {
-    // STEP 4: at each point apply J = p.normal n + p.friction[0] t1 + p.friction[1] t2 (t1, t2 from
-    // friction_tangents(contact.normal)) to body 1 and -J to body 2, with the angular terms
-    // (v += J/m, w += I^-1 (r x J) for body 1).
+    // STEP 4: at each point apply J = p.normal n to body 1 and -J to body 2, with the angular
+    // terms (v += J/m, w += I^-1 (r x J) for body 1).
     (void)body1;
     (void)body2;
     (void)contact;
@@ -81,23 +80,6 @@ double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact
     return 0.0;
 }
 //! [solve-velocity]
-
-//! [solve-friction]
-double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-                      double friction) {
-    // STEP 7: for each point: the slip s = relative point velocity; for each tangent t of
-    // friction_tangents(contact.normal): p.friction[d] -= normal_mass(body1, body2, point, t) * (s . t).
-    // Then keep the pair (p.friction[0], p.friction[1]) within radius friction * p.normal (scale it
-    // back onto the rim), apply what changed along t1 and t2, and return the largest change of a
-    // point's tangent velocity.
-    (void)body1;
-    (void)body2;
-    (void)contact;
-    (void)impulses;
-    (void)friction;
-    return 0.0;
-}
-//! [solve-friction]
 
 //! [solve-position]
 double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {

@@ -2,7 +2,6 @@
 #include "resting-contact.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "workbook/restitution.hpp"
@@ -86,42 +85,10 @@ void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& cont
 }
 
 void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) {
-    const auto [t1, t2] = friction_tangents(contact.normal);
     for (std::size_t i = 0; i < contact.point_count; ++i) {
-        const PointImpulse& p = impulses.points[i];
-        const Vector3 j = p.normal * contact.normal + p.friction[0] * t1 + p.friction[1] * t2;
-        if (j != Vector3{}) apply_impulse(body1, body2, contact.points[i].position, j);
+        const double j = impulses.points[i].normal;
+        if (j != 0.0) apply_impulse(body1, body2, contact.points[i].position, j * contact.normal);
     }
-}
-
-double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-                      double friction) {
-    const std::array<Vector3, 2> t = friction_tangents(contact.normal);
-    double largest = 0.0;
-    for (std::size_t i = 0; i < contact.point_count; ++i) {
-        PointImpulse& p = impulses.points[i];
-        const Vector3& at = contact.points[i].position;
-        const Vector3 slip = point_velocity(body1, at) - point_velocity(body2, at);
-        const std::array<double, 2> before = p.friction;
-        for (std::size_t d = 0; d < 2; ++d) {
-            const double mass = normal_mass(body1, body2, at, t[d]);
-            p.friction[d] -= mass * dot(slip, t[d]);
-        }
-        // Coulomb: the friction impulse can be no larger than mu times the normal impulse.
-        const double limit = friction * p.normal;
-        const double size = std::hypot(p.friction[0], p.friction[1]);
-        if (size > limit) {
-            const double scale = size > 0.0 ? limit / size : 0.0;
-            p.friction[0] *= scale;
-            p.friction[1] *= scale;
-        }
-        const Vector3 applied = (p.friction[0] - before[0]) * t[0] + (p.friction[1] - before[1]) * t[1];
-        if (applied == Vector3{}) continue;
-        apply_impulse(body1, body2, at, applied);
-        const Vector3 after = point_velocity(body1, at) - point_velocity(body2, at);
-        largest = std::max(largest, length((after - slip) - dot(after - slip, contact.normal) * contact.normal));
-    }
-    return largest;
 }
 
 double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {

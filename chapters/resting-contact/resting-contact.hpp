@@ -11,8 +11,8 @@
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
 
-/// Chapter 5, resting contact (\ref chapter_resting_contact): every contact of a step is
-/// solved together by sequential impulses. Each point keeps the impulse it has accumulated
+/// Chapter 5, resting contact (\ref chapter_resting_contact): every frictionless contact of a
+/// step is solved together by sequential impulses. Each point keeps the impulse it has accumulated
 /// within the step, only that sum has to stay non-negative, and the passes go on until no
 /// point approaches; overlap is removed on pseudo-velocities that are thrown away afterwards.
 ///
@@ -45,10 +45,9 @@ double accumulate(double& accumulated, double increment);
 void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
              const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt);
 
-/// Step 4. Warm start: applies the impulse already accumulated at every point on body 1 (and
-/// its opposite on body 2) at the point, with angular terms (as chapter 4's
-/// angular_impulse::apply_impulse()): `normal` along the contact normal plus `friction[0]`
-/// and `friction[1]` along the two workbook::friction_tangents() of the normal.
+/// Step 4. Warm start: applies the impulse already accumulated at every point, `normal` along
+/// the contact normal, on body 1 (and its opposite on body 2) at the point, with angular terms
+/// (as chapter 4's angular_impulse::apply_impulse()).
 void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses);
 
 /// Step 5. One pass over the points of one contact: at each, in order, the impulse
@@ -58,22 +57,13 @@ void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, cons
 /// change of a point's normal velocity this pass made, |applied| / mass, m/s (0 when none).
 double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
-/// Step 7 (friction). One pass over the points of one contact for Coulomb friction with
-/// coefficient `friction`: at each point, the tangential relative velocity along the two
-/// workbook::friction_tangents() t1, t2 is brought to zero by impulses of size
-/// -(v . t) / k_t (k_t: step 1's k with t for n), added to `friction`, and the sum is kept
-/// within the disc of radius `friction` x `normal` (scaled back onto its rim when outside);
-/// what changed is applied. Returns the largest change of a point's tangent velocity, m/s.
-double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-                      double friction);
-
 /// Step 6. The same pass for the overlap: the bodies' velocities are the pseudo-velocities
 /// (the world swaps them in, starting from zero), the target is `bias` and the sum is kept in
 /// `pseudo`. Returns the largest change of a point's normal pseudo-velocity, m/s.
 double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
 /// The functions above as the world's contact solver calls them (response model
-/// `resting-contact`).
-inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, &solve_friction, &solve_position};
+/// `resting-contact`): frictionless, so no friction pass (chapter 6, friction, adds one).
+inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, nullptr, &solve_position};
 
 }  // namespace workbook::resting_contact

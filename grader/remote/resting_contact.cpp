@@ -5,7 +5,7 @@
 
 namespace workbook::resting_contact {
 
-using Remote = remote::Functions<&normal_mass, &accumulate, &prepare, &warm_start, &solve_velocity, &solve_friction,
+using Remote = remote::Functions<&normal_mass, &accumulate, &prepare, &warm_start, &solve_velocity,
                                  &solve_position>;
 
 #if WORKBOOK_REMOTE_CHECKER
@@ -22,10 +22,6 @@ void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, cons
 }
 double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
     return Remote::call<&solve_velocity>(body1, body2, contact, impulses);
-}
-double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-                      double friction) {
-    return Remote::call<&solve_friction>(body1, body2, contact, impulses, friction);
 }
 double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
     return Remote::call<&solve_position>(body1, body2, contact, impulses);

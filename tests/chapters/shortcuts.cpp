@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sanitized_run.hpp"
 #include "state_hash.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
@@ -31,19 +32,24 @@ std::vector<fs::path> every_chapter_scene() {
     return files;
 }
 
-/// The state hash after every step of the scene, with the given shortcuts.
+/// How many steps of a scene the tests below compare: at most 20,000 body-steps a run, which
+/// every scene of chapters 1 to 4 is within (the billiard break has 16,000): the pile of
+/// chapter 5 (1,003 bodies, 180 steps) is compared over its first 19 steps, so that four runs
+/// of each scene keep the suite cheap. In the sanitizer build, chapter 5's heavy scenes over
+/// their first half second at most (sanitized_run.hpp); the dev build compares the rest too.
+std::size_t steps_compared(const Scene& scene) {
+    const std::size_t work_limit = 20000;
+    return testing::sanitized_steps(scene, std::min(step_count(scene.duration, scene.settings.time_step),
+                                                    std::max<std::size_t>(1, work_limit / scene.bodies.size())));
+}
+
 /// The state hash after every step of the scene, with the given shortcuts, followed by the
 /// hash of the probes after every step (the energy probe's column only when recorded).
 std::vector<std::uint64_t> path_of(const Scene& scene, const Shortcuts& shortcuts) {
     World world = make_world(scene, *find_response_model(scene.responder));
     world.set_shortcuts(shortcuts);
     std::vector<std::uint64_t> hashes;
-    // At most 20,000 body-steps a run, which every scene of chapters 1 to 4 is within (the
-    // billiard break has 16,000): the pile of chapter 5 (1,003 bodies, 600 steps) is compared
-    // over its first 20 steps, so that four runs of each scene keep the suite cheap.
-    const std::size_t work_limit = 20000;
-    const std::size_t steps = std::min(step_count(scene.duration, scene.settings.time_step),
-                                       std::max<std::size_t>(1, work_limit / scene.bodies.size()));
+    const std::size_t steps = steps_compared(scene);
     for (std::size_t i = 0; i < steps; ++i) {
         world.step();
         hashes.push_back(testing::state_hash(world));
@@ -133,9 +139,7 @@ TEST_CASE("step() is its public stages in order: same state hash after every ste
             if (scene.settings.contact_timing != ContactTiming::discrete) continue;
             CAPTURE(file.filename().string());
             const World world = make_world(scene, *find_response_model(scene.responder));
-            // The same budget of body-steps as path_of() above.
-            const std::size_t steps = std::min(step_count(scene.duration, scene.settings.time_step),
-                                               std::max<std::size_t>(1, 20000 / scene.bodies.size()));
+            const std::size_t steps = steps_compared(scene);  // as path_of() above
             CHECK(stage_path(world, steps, true) == stage_path(world, steps, false));
         }
     }

@@ -147,19 +147,3 @@ TEST_CASE("hidden: the position pass between a ball and a wall", "[resting-conta
                  "2 kg ball 5 mm into a wall, bias 0.25 m/s, 0.1 kg m/s already accumulated (pseudo-velocity 0.05 m/s)");
     expect_close(laws::pseudo, 0.5, impulses.points[0].pseudo, rounding_tolerance(0.5), "kg m/s", "the accumulated pseudo-impulse");
 }
-
-TEST_CASE("hidden: friction on a ball sliding diagonally", "[resting-contact][step:7:friction][points:3]") {
-    RigidBody ball = make_sphere(2.0, 0.2, {0, 0, 0.2}, {0.7, -1.4, 0});
-    RigidBody floor = make_immovable_plane({0, 0, 1}, {0, 0, 0});
-    ContactImpulses impulses;
-    impulses.points[0].normal = 50.0;
-    (void)resting_contact::solve_friction(ball, floor, contact_at({0, 0, 1}, {0, 0, 0}, 0.0), impulses, 0.3);
-    expect_close(laws::coulomb, Vector3{0.5, -1.0, 0}, ball.velocity, rounding_tolerance(2.0, 64), "m/s",
-                 "2 kg ball, r = 0.2 m, sliding at (0.7, -1.4, 0) m/s, room to spare: rolling at 5/7 of it");
-    RigidBody slow = make_sphere(2.0, 0.2, {0, 0, 0.2}, {0.7, -1.4, 0});
-    ContactImpulses little;
-    little.points[0].normal = 1.0;
-    (void)resting_contact::solve_friction(slow, floor, contact_at({0, 0, 1}, {0, 0, 0}, 0.0), little, 0.3);
-    const double size = std::hypot(little.points[0].friction[0], little.points[0].friction[1]);
-    expect_close(laws::coulomb, 0.3, size, rounding_tolerance(0.3, 64), "kg m/s", "normal impulse 1 kg m/s, mu 0.3");
-}

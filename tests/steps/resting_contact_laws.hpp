@@ -33,8 +33,8 @@ inline const Law bias{
     "cap at settings.max_push and divide by dt; set pseudo to 0 and leave normal alone"};
 inline const Law warm{
     "warm starting applies the stored impulse",
-    "body 1 gets +J and body 2 gets -J at the point, J = normal n + friction[0] t1 + friction[1] t2, with the angular "
-    "terms v += J / m, w += I^-1 (r x J)",
+    "body 1 gets +J and body 2 gets -J at the point, J = normal n, with the angular terms v += J / m, "
+    "w += I^-1 (r x J)",
     "apply the accumulated impulse itself, not a new one; each body's lever arm from its own centre"};
 inline const Law rest{
     "a resting point stops approaching",
@@ -57,11 +57,4 @@ inline const Law pseudo{
     "the position pass drives the relative normal pseudo-velocity to the bias, keeping its sum in `pseudo`, not in "
     "`normal`",
     "the same pass as step 5 with bias for bounce and pseudo for normal"};
-inline const Law coulomb{
-    "Coulomb friction",
-    "the friction impulse stops the slip at the point when it can, and is never larger than mu times the normal "
-    "impulse; a ball sliding at v on the ground with room to spare ends rolling, at 5/7 v",
-    "for each tangent t: dJ_t = -(slip . t) / k_t with k_t from step 1 with t for n; add to friction[], scale the pair "
-    "back to length mu * normal when longer, and apply the change along the tangents"};
-
 }  // namespace workbook::resting_contact_laws

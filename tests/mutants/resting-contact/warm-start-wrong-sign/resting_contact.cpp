@@ -3,11 +3,9 @@
 namespace workbook::resting_contact {
 
 void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) {
-    const auto [t1, t2] = friction_tangents(contact.normal);
     for (std::size_t i = 0; i < contact.point_count; ++i) {
-        const PointImpulse& p = impulses.points[i];
-        const Vector3 j = p.normal * contact.normal + p.friction[0] * t1 + p.friction[1] * t2;
-        if (j != Vector3{}) apply_impulse(body2, body1, contact.points[i].position, j);
+        const double j = impulses.points[i].normal;
+        if (j != 0.0) apply_impulse(body2, body1, contact.points[i].position, j * contact.normal);
     }
 }
 
