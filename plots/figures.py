@@ -46,9 +46,19 @@ LOSS_LAW = {"inelastic": "−½ μ |v₁ − v₂|²", "projection": "0: positio
 LOSS_LAW["angular-impulse"] = "½ (1 − e) Σ Jᵢ uᵢ"  # u_i < 0: each pushing point i approached at u_i
 
 # Responders whose figures get a third panel, the deepest penetration per step (the CSV's
-# penetration_max), because what they change is positions.
-DEPTH_PANEL = {"projection"}
+# penetration_max), because what they change is positions (projection), or because keeping
+# overlap within the slop is half of what they do (resting contact: the slop drawn).
+DEPTH_PANEL = {"projection", "resting-contact"}
 DEPTH = ("penetration_max", "deepest penetration", 41)
+
+# Responders whose contacts rest rather than hit: no single impact to mark. What the energy
+# panel states instead is the kinetic energy left at the end: zero for bodies come to rest.
+RESTING = {"resting-contact"}
+
+
+def final_kinetic(data):
+    """Kinetic energy (linear and rotational) of the last sample, J."""
+    return data["kinetic_linear"][-1] + data["kinetic_rotational"][-1]
 
 FORMATS = figure_render.FORMATS
 
@@ -171,12 +181,13 @@ def curves(datasets, series, factor, axes=""):
     return clauses
 
 
-def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=()):
+def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=(), slop=None):
     """The multiplot body (everything after `set output`) for one scene. `stops` lists
-    (whose curves, time) where a run's values stopped being finite: marked on both panels."""
+    (whose curves, time) where a run's values stopped being finite: marked on both panels.
+    `slop` (m): drawn across the penetration panel, where there is one."""
     main = (reference or student)[1]
     everything = [d for _, d, _, _ in datasets]
-    hit = impact(main)
+    hit = None if responder in RESTING else impact(main)
     stop_marks = []
     for n, (who, t_stop) in enumerate(stops):
         stop_marks += [f"set arrow {5 + n} from {t_stop!r}, graph 0 to {t_stop!r}, graph 1 nohead dt 2 lw 2 lc rgb c_drop",
@@ -235,6 +246,14 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
             g.append(f"set label {10 + n} {quote(text)} at first {t_arrow if right else t_hit!r}, graph {0.87 - 0.07 * n!r} "
                      f"{'left offset character 0.8' if right else 'right offset character -0.8'}, 0 "
                      "font label_font tc rgb c_drop noenhanced")
+    if responder in RESTING:
+        # Resting contact: no impact; the kinetic energy left at the end, run by run.
+        lines = [f"{'' if own else who + ': '}kinetic at the end: {number(final_kinetic(d) * e_factor, e_unit)}"
+                 for who, d, own in (("reference", reference[1] if reference else None, not student),
+                                     ("your code", student[1] if student else None, not reference)) if d is not None]
+        for n, text in enumerate(lines):
+            g.append(f"set label {10 + n} {quote(text)} at graph 0.03, graph {0.87 - 0.07 * n!r} left "
+                     "font label_font tc rgb c_drop noenhanced")
     plot = curves(datasets, energy, e_factor)
     if reference and student:
         plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
@@ -259,9 +278,13 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
 
     # Penetration panel: the deepest contact of each step as detected, before correction.
     if depth_panel:
-        d_lo, d_hi = axis_range([1000.0 * v for d in everything for v in d[DEPTH[0]]])
+        d_lo, d_hi = axis_range([1000.0 * v for d in everything for v in d[DEPTH[0]]] + ([1000.0 * slop] if slop else []))
         g += ["unset y2label", "unset y2tics", "unset my2tics", "set border 3", "set title 'Penetration'",
               "set ylabel 'depth / mm'", f"set yrange [{d_lo!r}:{d_hi!r}]"]
+        if slop:
+            g += [f"set arrow 3 from graph 0, first {1000.0 * slop!r} to graph 1, first {1000.0 * slop!r} nohead dt 2 lw 1.5 lc rgb c_note",
+                  f"set label 3 {quote(f'slop {slop * 1000.0:g} mm')} at graph 0.97, first {1000.0 * slop!r} right "
+                  "offset 0, character 0.7 font note_font tc rgb c_note"]
         plot = curves(datasets, [DEPTH[:3]], 1000.0)
         if reference and student:
             plot += ["NaN with lines ls 90 title 'reference'", "NaN with lines ls 90 dt student_dash title 'your code'"]
@@ -378,7 +401,8 @@ def draw(scene, out_dir, stem, reference, student, scratch):
     reference, student = runs["reference"], runs["your code"]
     datasets = ([(reference[0], reference[1], False, True)] if reference else []) + \
                ([(student[0], student[1], bool(reference), not reference)] if student else [])
-    body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops)
+    slop = description.get("position_correction", {}).get("slop") if responder in RESTING else None
+    body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops, slop)
     render(body, out_dir, stem, scene.name)
     return notes
 

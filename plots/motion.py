@@ -176,6 +176,18 @@ def read_contacts(path):
     return steps
 
 
+# Responders whose contacts rest (chapter 5's stacks, columns, pyramids and piles): a touch's
+# first impulse is a step's share of the weight the solver passes down, found again every step,
+# not the answer to an impact; the pictures of their scenes mark no touches.
+RESTING_RESPONDERS = {"resting-contact"}
+
+
+def marked_touches(scene, contacts, limit=4):
+    """The touches a picture of `scene` marks: contact_onsets(), none for a responder of
+    RESTING_RESPONDERS."""
+    return [] if scene.responder in RESTING_RESPONDERS else contact_onsets(contacts, limit)
+
+
 def contact_onsets(contacts, limit=4):
     """The first step of each touch: a pair in contact in this step and not in the one before.
     Resting contact (a ball on the ground touches every step) counts once. Returns the first

@@ -64,7 +64,7 @@ def write(path, chapter, scene, runs, view, box, slow_motion):
                               motion.box_hands(scene.bodies[i], *trajectory.states[k][i][:2], view))
                    for i in motion.movable(scene)] for k in frames]
         touches = []
-        for c in motion.contact_onsets(contacts):
+        for c in motion.marked_touches(scene, contacts):
             length = motion.normal_arrow_length(scene, c, box)
             point = view.project([c["x"], c["y"], c["z"]])
             normal = view.project([c["nx"], c["ny"], c["nz"]])

@@ -87,7 +87,7 @@ def clashes(scene, runs, view, pitch, count, width):
     found = 0
     for _, contacts in runs:
         marks = sorted(view_at(view, pitch, scene.duration, c["t"], count).project([c["x"], c["y"], c["z"]])[0]
-                       for c in motion.contact_onsets(contacts))
+                       for c in motion.marked_touches(scene, contacts))
         found += sum(1 for i, a in enumerate(marks) for b in marks[i + 1:] if b - a < 0.04 * width)
     return found
 
@@ -166,7 +166,7 @@ def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, la
     """At each touch's first step: the contact point, the normal as an arrow (from body 2
     towards body 1, into body 1), and J and t beside it, clear of the other labels. With
     `between` = (t0, t1), only the touches that began in that time (a film's frame)."""
-    for c in motion.contact_onsets(contacts):
+    for c in motion.marked_touches(scene, contacts):
         if between and not between[0] <= c["t"] <= between[1]:
             continue
         where = view_at(canvas.view, pitch, scene.duration, c["t"], count)
@@ -241,7 +241,7 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
             plot.append(f"NaN with lines lc rgb '{colour}' lw 4 title {motion.quote(name)}")
         if any(student for _, _, student in runs):
             plot.append(f"NaN with lines lc rgb '{motion.STUDENT_COLOUR}' lw 3 dt 2 title 'your code'")
-        if any(run[1] for run in runs):
+        if any(motion.marked_touches(scene, run[1]) for run in runs):
             plot.append(f"NaN with vectors lc rgb '{motion.CONTACT_COLOUR}' lw 3 title 'contact normal, impulse J'")
     g += ["plot " + ", ".join(plot), "unset object", "unset arrow", "unset label"]
     return g

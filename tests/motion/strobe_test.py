@@ -11,7 +11,8 @@
 - Boxes turn truthfully: the spinning cube's +x hand stands at 5 t radians before it hits.
 - Labels of touches at one place do not cover one another.
 - The marked contacts are the touches' first steps, with the impulse of the trajectory file:
-  in the head-on carts, one touch at t = 0.2 s with J = mu |v1 - v2| = 2/3 kg * 3 m/s = 2 N s.
+  in the head-on carts, one touch at t = 0.2 s with J = mu |v1 - v2| = 2/3 kg * 3 m/s = 2 N s;
+  chapter 5's resting contacts are not marked.
 - Every scene of every chapter gets an SVG, a PDF and a PNG of the stated size. In the
   sanitizer build (--sanitized) the heavy scenes (plots/motion.py: is_heavy) are left out:
   drawing them is Python and gnuplot, the same in both builds, and a thousand discs take the
@@ -139,6 +140,15 @@ def main():
         if onsets:
             check(abs(onsets[0]["t"] - 0.2) < 1e-9, f"head-on carts: touch at t = {onsets[0]['t']}")
             check(abs(onsets[0]["impulse"] - 2.0) < 1e-12, f"head-on carts: J = {onsets[0]['impulse']}, expected 2 N s")
+        # Chapter 5's contacts rest: a touch's first impulse is a step's share of the weight, not
+        # an impact's answer, and its pictures mark none (a chapter 1 scene's touch is marked).
+        knocked = args.source / "chapters/resting-contact/scenes/stack-knocked-over.json"
+        resting = motion.Scene(knocked)
+        t, c = motion.simulate(args.sim, knocked, scratch / "stack-knocked-over.trajectory.csv", motion.stride_for(resting.spec))
+        check(len(motion.contact_onsets(motion.read_contacts(c))) > 0, "the knocked-over stack has no touch at all")
+        check(motion.marked_touches(resting, motion.read_contacts(c)) == [], "a resting-contact scene's touches are marked")
+        check(len(motion.marked_touches(loaded["head-on-carts"][0], loaded["head-on-carts"][2])) == 1,
+              "head-on carts: marked_touches() should keep its one touch")
         drop = motion.contact_onsets(loaded["clay-drop"][2])
         check(len(drop) == 1, f"clay drop: resting contact should be marked once, got {len(drop)}")
 
