@@ -7,7 +7,11 @@ Kinds:
   staircase  kinetic energy over time for several scenes on one axis, one colour each, with
              optional overlays from other chapters drawn dashed on top;
   apexes     for a ball bouncing on the ground: the height of each apex after a bounce next to
-             the closed form e^(2k) h0, and the relative error of each apex beside it.
+             the closed form e^(2k) h0, and the relative error of each apex beside it;
+  passes     for a scene with a contact solver: the scene run again for each most number of
+             velocity passes per step, warm started and not, and what each run leaves: the
+             deepest overlap of its last second and how far the bodies sank (plots/figures.py
+             runs them: run_passes below).
 """
 
 import json
@@ -23,7 +27,82 @@ FAMILIES = {
         {"name": "bouncing-ball-apexes", "kind": "apexes", "scene": "linear-impulse/bouncing-ball",
          "title": "Ball bouncing at e = 0.8: apex height after each bounce"},
     ],
+    "resting-contact": [
+        {"name": "passes-against-accuracy", "kind": "passes", "scene": "resting-contact/column-of-15-balls",
+         "seconds": 5.0, "passes": [1, 2, 4, 8, 16, 32, 64, 128, 256],
+         "title": "Fifteen balls standing for 5 s: what the velocity passes of a step leave"},
+    ],
 }
+
+PASSES_COLUMNS = ["who", "warm_start", "passes", "overlap_mm", "sunk_mm"]
+
+
+def passes_variant(spec, passes, warm_start, seconds):
+    """The scene description run for one point of a passes figure."""
+    solver = dict(spec.get("contact_solver", {}), velocity_iterations=passes, warm_start=warm_start)
+    return dict(spec, duration=seconds, contact_solver=solver)
+
+
+def passes_measures(spec, data, seconds):
+    """(deepest overlap of the last second in mm, how far the bodies' mean height fell in mm)."""
+    last = [d for t, d in zip(data["t"], data["penetration_max"]) if t >= seconds - 1.0 - 1e-9]
+    mass = sum(b.get("mass", 0.0) for b in spec["bodies"] if not b.get("immovable"))
+    g = sum(v * v for v in spec.get("gravity", [0, 0, 0])) ** 0.5
+    sunk = (data["potential"][0] - data["potential"][-1]) / (mass * g)
+    return 1000.0 * max(last), 1000.0 * sunk
+
+
+def run_passes(family, source, sims, run_scene, scratch):
+    """Rows of PASSES_COLUMNS: the family's scene for each of its pass counts, warm started and
+    not, with each (name, simulator) of `sims`; run_scene(sim, scene, csv) as plots/figures.py's."""
+    spec = json.loads(scene_path(source, family["scene"]).read_text())
+    rows = []
+    for who, sim in sims:
+        for warm in (True, False):
+            for n in family["passes"]:
+                variant = Path(scratch, f"passes-{who.replace(' ', '-')}-{int(warm)}-{n}.json")
+                variant.write_text(json.dumps(passes_variant(spec, n, warm, family["seconds"])))
+                data = run_scene(sim, variant, variant.with_suffix(".csv"))
+                rows.append([who, warm, n, *passes_measures(spec, data, family["seconds"])])
+    return rows
+
+
+SOURCE = Path(__file__).resolve().parent.parent
+
+
+def passes(family, rows, scratch):
+    """gnuplot body: the overlap left and the sinking against the passes per step (log scale)."""
+    table = Path(scratch, family["name"] + ".dat")
+    series = []
+    with open(table, "w") as out:
+        for who in dict.fromkeys(r[0] for r in rows):
+            for warm in (True, False):
+                chosen = [r for r in rows if r[0] == who and r[1] == warm]
+                series.append((who, warm, len(series)))
+                out.write("".join(f"{r[2]},{r[3]!r},{r[4]!r}\n" for r in chosen) + "\n\n")
+    most = max(r[2] for r in rows)
+    g = [f"set multiplot layout 1,2 title {quote(family['title'])} font title_font noenhanced",
+         "set logscale x 2", f"set xrange [0.8:{most * 1.25!r}]", "set xlabel 'velocity passes per step, at most'",
+         "set format x '%g'", "set key inside top right vertical Left reverse"]
+    slop = 1000.0 * json.loads(scene_path(SOURCE, family["scene"]).read_text()).get("position_correction", {}).get("slop", 0.0)
+    for column, title, ylabel in ((2, "Deepest overlap, last second", "depth / mm"), (3, "How far the balls sank", "mean height lost / mm")):
+        top = max(r[column + 1] for r in rows)
+        low = min([r[column + 1] for r in rows] + ([slop] if column == 2 and slop > 0 else []))
+        g += [f"set title {quote(title)}", f"set ylabel {quote(ylabel)}", "set logscale y 10", "set format y '%g'",
+              f"set yrange [{max(low, 1e-3) * 0.5!r}:{top * 2.0!r}]", "unset arrow", "unset label"]
+        if column == 2 and slop > 0:  # the overlap the position pass leaves alone
+            g += [f"set arrow 1 from graph 0, first {slop!r} to graph 1, first {slop!r} nohead dt 2 lw 1.5 lc rgb c_note",
+                  f"set label 1 {quote(f'slop {slop:g} mm')} at graph 0.97, first {slop!r} right offset 0, character 0.7 "
+                  "font note_font tc rgb c_note"]
+        plot = []
+        for who, warm, index in series:
+            style = 61 if warm else 62
+            dashed = " dt student_dash" if who == "your code" and len(series) > 2 else ""
+            label = ("warm started" if warm else "from zero") + ("" if who == "reference" else f" ({who})")
+            plot.append(f"'{table}' index {index} using 1:{column} with linespoints ls {style}{dashed} title {quote(label)}")
+        g.append("plot " + ", \\\n     ".join(plot))
+    g.append("unset multiplot")
+    return "\n".join(g)
 
 
 def scene_path(source, member):
@@ -135,6 +214,9 @@ def write_csv(family, runs, student_runs, scratch, path):
     """The numbers a family figure draws, as CSV beside it."""
     if family["kind"] == "apexes":
         path.write_text((Path(scratch) / (family["name"] + ".dat")).read_text())
+        return
+    if family["kind"] == "passes":  # runs: the rows of run_passes()
+        path.write_text(",".join(PASSES_COLUMNS) + "\n" + "".join(",".join(str(v) for v in row) + "\n" for row in runs))
         return
     columns = []
     for source, suffix in ((runs, ""), (student_runs, "_your_code")):

@@ -414,8 +414,14 @@ def draw_families(args, have_reference, scratch):
         stem = family["name"] + (".student" if args.student else "")
         print(f"figures: {args.chapter}/{family['name']} (family) -> {args.out / stem}.{{svg,pdf,png,csv}}", flush=True)
         try:
+            if family["kind"] == "passes":  # one scene run again and again with other solver settings
+                sims = ([("reference", args.sim)] if have_reference else []) + \
+                       ([("your code", args.student_sim)] if args.student else [])
+                rows = families.run_passes(family, SOURCE, sims, run_scene, scratch)
+                body = families.passes(family, rows, scratch)
+                families.write_csv(family, rows, {}, scratch, args.out / (stem + ".csv"))
             runs, student_runs = {}, {}
-            for member in families.members(family):
+            for member in (families.members(family) if family["kind"] != "passes" else []):
                 scene = families.scene_path(SOURCE, member)
                 name = member.replace("/", "--")
                 if have_reference:
@@ -427,8 +433,9 @@ def draw_families(args, have_reference, scratch):
                 if args.student and member.split("/")[0] == args.chapter:
                     path = Path(scratch, name + ".student.csv")
                     student_runs[member] = (path, run_scene(args.student_sim, scene, path))
-            body = families.body(family, runs, student_runs, SOURCE, scratch)
-            families.write_csv(family, runs, student_runs, scratch, args.out / (stem + ".csv"))
+            if family["kind"] != "passes":
+                body = families.body(family, runs, student_runs, SOURCE, scratch)
+                families.write_csv(family, runs, student_runs, scratch, args.out / (stem + ".csv"))
             script = []
             for ext in FORMATS:
                 script += ["reset", f"load {quote(str(STYLE))}", f"eval use_{ext}",
