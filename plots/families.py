@@ -83,7 +83,7 @@ def passes(family, rows, scratch):
     most = max(r[2] for r in rows)
     g = [f"set multiplot layout 1,2 title {quote(family['title'])} font title_font noenhanced",
          "set logscale x 2", f"set xrange [0.8:{most * 1.25!r}]", "set xlabel 'velocity passes per step, at most'",
-         "set format x '%g'", "set key inside top right vertical Left reverse"]
+         "set format x '%g'", "set key outside below center horizontal Left reverse"]
     slop = 1000.0 * json.loads(scene_path(SOURCE, family["scene"]).read_text()).get("position_correction", {}).get("slop", 0.0)
     for column, title, ylabel in ((2, "Deepest overlap, last second", "depth / mm"), (3, "How far the balls sank", "mean height lost / mm")):
         top = max(r[column + 1] for r in rows)
