@@ -106,7 +106,7 @@ TEST_CASE("chapter 5 scenes: the column of balls rests", "[resting-contact]") { 
 // Without friction (chapter 6's subject) the stack of ten boxes tips over at about 0.3 s with
 // today's solver: the four points of each contact, solved one after another, leave the boxes
 // a small turn that nothing holds. Marked as failing until the contact solver makes it stand;
-// then this test fails and the mark must go. (In the sanitizer build the case is skipped, and
+// then this test fails, and the mark must go with the caption's "They do not yet" (chapter.md). (In the sanitizer build the case is skipped, and
 // a mark on a case that passes for lack of checks would fail: hence the dev-only tag there.)
 TEST_CASE("chapter 5 scenes: the frictionless stack of ten boxes rests (not yet: it tips over)",
           "[resting-contact][!shouldfail]") {
