@@ -261,8 +261,8 @@ def main():
     parser.add_argument("--binary", default="build/dev/bench/workbook-pile", help="the workbook-pile executable")
     parser.add_argument("--out", type=Path, default=Path("build/dev/book/bench"), help="folder for pile.csv and pile.md")
     parser.add_argument("--figures", type=Path, help="folder for pile.svg/pdf/png (default: OUT)")
-    parser.add_argument("--sizes", "--counts", type=lambda s: [int(x) for x in s.replace(" ", ",").split(",") if x],
-                        default=None, help=f"numbers of discs, comma-separated (default {','.join(map(str, SIZES))})")
+    parser.add_argument("--sizes", "--counts", nargs="+", default=None,
+                        help=f"numbers of discs, comma- or space-separated (default {','.join(map(str, SIZES))})")
     parser.add_argument("--peers-up-to", type=int, default=None,
                         help=f"run the peers only up to this N (default {PEERS_UP_TO:,}); the table says 'not run' above")
     parser.add_argument("--engines", type=lambda s: s.split(","), default=None)
@@ -275,7 +275,8 @@ def main():
     parser.add_argument("--no-figure", action="store_true")
     parser.add_argument("--record", action="store_true", help=f"also copy pile.csv, pile.md and pile.svg into {RESULTS}")
     args = parser.parse_args()
-    sizes = args.sizes or (QUICK_SIZES if args.quick else SIZES)
+    sizes = [int(x) for item in args.sizes for x in item.split(",") if x] if args.sizes else (
+        QUICK_SIZES if args.quick else SIZES)
     seconds = args.seconds or (QUICK_SECONDS if args.quick else 10.0)
     peers_up_to = args.peers_up_to if args.peers_up_to is not None else (max(sizes) if args.quick else PEERS_UP_TO)
 
