@@ -19,7 +19,8 @@ A run whose steps take more than the budget (processor time, --budget) is stoppe
 cell reads "skipped: over budget"; so is every larger N of that engine, and any N at which
 even a linear growth from the engine's last result would take more than the budget, which is
 then not started. With --record it also copies the table, the CSV and the SVG into
-bench/results/. --quick is the small run the tests make (16 and 100 discs, 3 s).
+bench/results/; --rewrite runs nothing and writes the table and the figure again from a run's
+CSV. --quick is the small run the tests make (16 and 100 discs, 3 s).
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread);
 with --repeat R each is the fastest of R runs (the state at the end is the same every run).
