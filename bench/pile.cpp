@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <stdexcept>
 
 #include "workbook/probes.hpp"
@@ -52,7 +51,19 @@ PileResult measure_pile(const Pile& pile, const std::vector<double>& x, const st
     return r;
 }
 
-PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs) {
+PileResult finish_pile(const Pile& pile, double seconds, const std::vector<double>& x, const std::vector<double>& y,
+                       const std::vector<double>& vx, const std::vector<double>& vy) {
+    if (seconds < 0.0) {
+        PileResult over;
+        over.over_budget = true;
+        return over;
+    }
+    PileResult result = measure_pile(pile, x, y, vx, vy);
+    result.seconds = seconds;
+    return result;
+}
+
+PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs, double budget) {
     std::vector<RigidBody> bodies;
     for (std::size_t i = 0; i < pile.x.size(); ++i) {
         RigidBody disc = make_sphere(Pile::mass, Pile::radius, {pile.x[i], pile.y[i], 0});
@@ -78,10 +89,7 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.tolerance = knobs.tolerance;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
-    const std::clock_t start = std::clock();
-    for (int i = 0; i < steps; ++i) world.step();
-    PileResult result;
-    result.seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    const double seconds = timed_steps(steps, budget, [&world] { world.step(); });
     std::vector<double> x, y, vx, vy;
     for (const RigidBody& b : world.bodies())
         if (!b.is_immovable()) {
@@ -90,10 +98,7 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
             vx.push_back(b.velocity.x);
             vy.push_back(b.velocity.y);
         }
-    const double seconds = result.seconds;
-    result = measure_pile(pile, x, y, vx, vy);
-    result.seconds = seconds;
-    return result;
+    return finish_pile(pile, seconds, x, y, vx, vy);
 }
 
 }  // namespace workbook::bench

@@ -2,9 +2,13 @@
 // The pile of chapter 5, the scene `./workbook bench pile` runs: N frictionless discs
 // (spheres in z = 0) of radius 0.05 m and mass 1 kg, e = 0, dropped from a loose grid into a
 // box of ground (y = 0) and two walls of inner width sqrt(N) x 0.1 m, g = 9.81 m/s^2 down,
-// time step 1/60 s. Keeping its definition in one place makes the engines' numbers comparable.
+// time step 1/60 s. Keeping its definition in one place makes the engines' numbers comparable:
+// the workbook (pile.cpp) and each peer (pile_<engine>.cpp) build it from make_pile() and are
+// measured by measure_pile().
 
 #include <cstdint>
+#include <ctime>
+#include <limits>
 #include <vector>
 
 namespace workbook::bench {
@@ -16,6 +20,9 @@ struct Pile {
     static constexpr double time_step = 1.0 / 60;  ///< s
     double width = 0.0;                            ///< inner width, m; the walls are at x = +-width/2
     std::vector<double> x, y;                      ///< start centres, m; at rest
+    /// Height of the peers' walls, m: twice the highest start centre and a metre more (the
+    /// workbook's walls are planes, endless upwards; no disc ever climbs above where it started).
+    [[nodiscard]] double wall_height() const { return 2.0 * (y.empty() ? 0.0 : y.back()) + 1.0; }
 };
 
 /// The pile of `count` discs: rows of discs 2.4 radii apart (columns as many as fit the
@@ -30,7 +37,26 @@ struct PileResult {
     double kinetic = 0.0;         ///< kinetic energy at the end, J
     double mean_height = 0.0;     ///< mean height of the centres at the end, m
     std::uint32_t outside = 0;    ///< discs whose centre is not inside the box at the end
+    bool over_budget = false;     ///< the run was stopped when its steps had taken `budget` s; no measurement
 };
+
+/// Runs `step` `steps` times, timing them with std::clock (processor time: every engine here
+/// runs on one thread), and stops early once they have taken more than `budget` seconds, so
+/// that an engine too slow at a large N is reported as over budget instead of holding the
+/// bench for hours. Returns the seconds taken, or a negative number when over budget.
+template <class Step>
+double timed_steps(int steps, double budget, Step&& step) {
+    const std::clock_t start = std::clock();
+    auto elapsed = [start] { return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC; };
+    for (int i = 0; i < steps; ++i) {
+        step();
+        if (i % 16 == 15 && elapsed() > budget) return -1.0;  // std::clock costs a system call: not every step
+    }
+    return elapsed();
+}
+
+/// No budget: run every step.
+inline constexpr double unlimited = std::numeric_limits<double>::infinity();
 
 /// Measures positions and velocities of discs at the end of a run, the same way for every engine.
 PileResult measure_pile(const Pile& pile, const std::vector<double>& x, const std::vector<double>& y,
@@ -48,6 +74,17 @@ struct PileKnobs {
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).
-PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs = {});
+PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs = {}, double budget = unlimited);
+
+/// The pile in each peer, on the peer's own defaults (each file says which, and the little it
+/// sets to make the scene the same: frictionless, e = 0, metres). Defined when the build found
+/// the peer's Debian package (libchipmunk-dev, libbox2d-dev, libbullet-dev).
+PileResult run_pile_chipmunk(const Pile& pile, int steps, double budget = unlimited);
+PileResult run_pile_box2d(const Pile& pile, int steps, double budget = unlimited);
+PileResult run_pile_bullet(const Pile& pile, int steps, double budget = unlimited);
+
+/// The measurement of a peer's run: its discs' states measured, or over budget.
+PileResult finish_pile(const Pile& pile, double seconds, const std::vector<double>& x, const std::vector<double>& y,
+                       const std::vector<double>& vx, const std::vector<double>& vy);
 
 }  // namespace workbook::bench

@@ -34,6 +34,8 @@ TITLES = {
     "stacked-drop": "Stacked-ball drop, 0.1 kg on 1 kg, e = 1: the small ball's apex",
     "tilted-rod": "Tilted rod, 30°, lands at 3 m/s, e = 0.5: velocity and spin after the impact",
     "torque-free-box": "Box spinning freely near its middle axis, 10 s: drift of L and E",
+    "incline": "Block on a 30° incline, μ = 0.3 (slides) and 0.8 (sticks): slide and speed after 1 s",
+    "thrown-ball": "Ball thrown at 3 m/s without spin, μ = 0.2: slides, then rolls at 5/7 v_0; state after 1 s",
 }
 
 # (integrator, timing, key title, colour variable of style.gp, point type): the workbook.
@@ -50,7 +52,7 @@ PEERS = [("Chipmunk", "c_green", 4), ("Box2D", "c_purple", 6), ("Bullet", "'#303
 
 # The families the peers run (tools/accuracy/peers.cpp); a figure of one of them drawn without
 # peers says why, so that no caption promises points the figure lacks.
-PEER_FAMILIES = {"bouncing-ball", "head-on", "cradle"}
+PEER_FAMILIES = {"bouncing-ball", "head-on", "cradle", "incline", "thrown-ball"}
 
 
 def quote(text):

@@ -227,6 +227,12 @@ std::vector<Family> families() {
          "angular-impulse", angular, &tilted_rod_error},
         {"torque-free-box", "Box spinning freely near its middle axis for 10 s: drift of |L| and of E", "angular-impulse",
          angular, &torque_free_box_error, false, false},
+        // Chapter 6's: the model and the way the coefficient is given are friction_families.cpp's
+        // (chapter 5's contact solver until chapter 6 is merged), whose solver needs discrete timing.
+        {"incline", "Block on a 30-degree incline, mu = 0.3 (slides) and 0.8 (sticks): slide and speed after 1 s",
+         "friction", friction_model(), &incline_error, true, false},
+        {"thrown-ball", "Ball thrown at 3 m/s without spin, mu = 0.2: slides, then rolls at 5/7 v0; state after 1 s",
+         "friction", friction_model(), &thrown_ball_error, true, false},
     };
 }
 

@@ -19,7 +19,12 @@
 ///    with the angular term (chapter 4, rigid_families.cpp);
 ///  - torque-free box: the largest relative drift of the angular momentum L (the vector, so
 ///    its length and direction) and of the kinetic energy of a box spinning freely about a
-///    direction near its middle axis (rigid_families.cpp).
+///    direction near its middle axis (rigid_families.cpp);
+///  - block on an incline: how far the block's slide and speed after 1 s are from the
+///    closed form, over the frictionless slide, for a block that slides and one that sticks
+///    (friction_families.cpp);
+///  - thrown ball: the state after 1 s of a ball set sliding without spin, against the slide
+///    and then the roll at 5/7 of its speed (friction_families.cpp).
 /// A run that never reaches what is measured (a bounce is missed) has error 1.
 ///
 /// The scenes' numbers and closed forms live in small structs (HeadOn, Cradle, BouncingBall)
@@ -149,6 +154,51 @@ FamilyError tilted_rod_error(const WorldSettings& settings, const ResponseModel&
 /// and |E - E0| / E0.
 FamilyError torque_free_box_error(const WorldSettings& settings, const ResponseModel& model);
 
+/// A block on an incline (chapter 6, friction), seen in the incline's frame: a box 0.2 m
+/// long and 0.1 m high (0.1 m deep), 1 kg, at rest on flat ground y = 0, with gravity tilted
+/// by theta = 30 degrees, (g sin(theta), -g cos(theta)): the same motion as on a 30-degree
+/// slope, and every engine builds it from axis-aligned shapes. Friction coefficient mu, the
+/// same static and dynamic. Closed form: it sticks when tan(theta) <= mu; otherwise it slides
+/// down the slope (+x) with a = g (sin(theta) - mu cos(theta)), x = a t^2 / 2, v = a t. The
+/// family runs both: mu = 0.3 (slides, tan 30 degrees = 0.577) and mu = 0.8 (sticks).
+struct Incline {
+    double theta_degrees = 30.0, g = 9.81, mass = 1.0;
+    double half_length = 0.1, half_height = 0.05, half_depth = 0.05;  ///< m
+    double duration = 1.0;                                             ///< s
+    static constexpr double mu_slides = 0.3, mu_sticks = 0.8;
+    [[nodiscard]] double gravity_x() const;  ///< g sin(theta), down the slope
+    [[nodiscard]] double gravity_y() const;  ///< -g cos(theta), into the slope
+    /// The block's acceleration down the slope: 0 when tan(theta) <= mu, else g (sin - mu cos).
+    [[nodiscard]] double acceleration(double mu) const;
+    /// At time t: the larger of |x - a t^2 / 2| over the frictionless slide g sin(theta) t^2 / 2
+    /// and |v - a t| over the frictionless speed g sin(theta) t (so that sticking, whose exact
+    /// answer is 0, is measured against the same scale as sliding).
+    [[nodiscard]] double error(double mu, double t, double x, double vx) const;
+};
+
+/// A solid ball (radius 0.1 m, 1 kg, I = 2/5 m r^2) set on the ground at v0 = 3 m/s without
+/// spin, friction mu = 0.2 (static and dynamic), g = 9.81 m/s^2, for 1 s. Closed form: it slides,
+/// v = v0 - mu g t, while friction spins it up, w = 5 mu g t / (2 r) (about -z for motion along
+/// +x); at t* = 2 v0 / (7 mu g) (0.437 s) v = w r and from then on it rolls at 5/7 v0.
+struct ThrownBall {
+    double radius = 0.1, mass = 1.0, v0 = 3.0, mu = 0.2, g = 9.81, duration = 1.0;
+    [[nodiscard]] double switch_time() const { return 2.0 * v0 / (7.0 * mu * g); }
+    [[nodiscard]] double velocity(double t) const;  ///< m/s along +x
+    [[nodiscard]] double position(double t) const;  ///< m along x, from 0
+    [[nodiscard]] double spin(double t) const;      ///< rad/s about +z (negative: rolling towards +x)
+    /// At time t: the larger of |v - v(t)| / v0, |w - w(t)| r / v0 and |x - x(t)| / (2 r).
+    [[nodiscard]] double error(double t, double x, double vx, double spin_z) const;
+};
+
+/// The response model the workbook's friction families run with and the world it builds for
+/// them: see friction_families.cpp, the one place that says how the workbook is given a
+/// friction coefficient.
+const ResponseModel& friction_model();
+World friction_world(std::vector<RigidBody> bodies, WorldSettings settings, const ResponseModel& model, double mu);
+
+FamilyError incline_error(const WorldSettings& settings, const ResponseModel& model);
+FamilyError thrown_ball_error(const WorldSettings& settings, const ResponseModel& model);
+
 /// A family for the bench: its id (file names), a title (figures), the chapter whose page
 /// shows it, the chapter model it runs with, and its run.
 struct Family {
@@ -158,7 +208,9 @@ struct Family {
     ResponseModel model;
     FamilyError (*run)(const WorldSettings&, const ResponseModel&);
     bool gravity = true;   ///< false: no gravity, so the integrators move bodies alike and one is swept
-    bool contacts = true;  ///< false: no contact, so the timing changes nothing and only discrete is swept
+    /// false: only discrete timing is swept (no contact, so the timing changes nothing; or a
+    /// model that solves a step's contacts together, which needs discrete timing)
+    bool contacts = true;
 };
 
 /// Every family with a closed form, in chapter order, each with its chapter's response model

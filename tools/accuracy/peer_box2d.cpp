@@ -14,27 +14,41 @@ namespace {
 class Box2dWorld final : public PeerWorld {
 public:
     Box2dWorld(const PeerScene& scene, double frame_step)
-        : world_(b2Vec2(0.0f, static_cast<float>(-scene.g))), dt_(static_cast<float>(frame_step)) {
+        : world_(b2Vec2(static_cast<float>(scene.gx), static_cast<float>(-scene.g))), dt_(static_cast<float>(frame_step)) {
         world_.SetAllowSleeping(false);
-        // Box2D takes the larger of two fixtures' restitutions: e on every fixture gives e. Its
+        // Box2D takes the larger of two fixtures' restitutions and the square root of the
+        // product of their frictions: e and mu on every fixture give e and mu. Its restitution
         // threshold (default 1 m/s, below which it does not bounce) is off.
         b2FixtureDef fixture;
-        fixture.friction = 0.0f;
+        fixture.friction = static_cast<float>(scene.friction);
         fixture.restitution = static_cast<float>(scene.restitution);
         fixture.restitutionThreshold = 0.0f;
-        for (const PeerBall& b : scene.balls) {
+        auto add_body = [this](double x, double y, double vx, double vy) {
             b2BodyDef def;
             def.type = b2_dynamicBody;
-            def.position.Set(static_cast<float>(b.x), static_cast<float>(b.y));
-            def.linearVelocity.Set(static_cast<float>(b.vx), static_cast<float>(b.vy));
+            def.position.Set(static_cast<float>(x), static_cast<float>(y));
+            def.linearVelocity.Set(static_cast<float>(vx), static_cast<float>(vy));
             def.allowSleep = false;
-            b2Body* body = world_.CreateBody(&def);
+            return bodies_.emplace_back(world_.CreateBody(&def));
+        };
+        for (const PeerBall& b : scene.balls) {
+            b2Body* body = add_body(b.x, b.y, b.vx, b.vy);
             b2CircleShape circle;
             circle.m_radius = static_cast<float>(b.radius);
             fixture.shape = &circle;
             fixture.density = static_cast<float>(b.mass / (std::numbers::pi * b.radius * b.radius));
             body->CreateFixture(&fixture);
-            bodies_.push_back(body);
+            // A solid sphere's moment, 2/5 m r^2, not a disc's (peers.hpp).
+            b2MassData mass{static_cast<float>(b.mass), b2Vec2(0.0f, 0.0f), static_cast<float>(0.4 * b.mass * b.radius * b.radius)};
+            body->SetMassData(&mass);
+        }
+        for (const PeerBox& b : scene.boxes) {
+            b2Body* body = add_body(b.x, b.y, b.vx, b.vy);
+            b2PolygonShape box;
+            box.SetAsBox(static_cast<float>(b.half_width), static_cast<float>(b.half_height));
+            fixture.shape = &box;
+            fixture.density = static_cast<float>(b.mass / (4.0 * b.half_width * b.half_height));
+            body->CreateFixture(&fixture);
         }
         if (scene.ground) {
             b2BodyDef def;
@@ -48,10 +62,11 @@ public:
     }
     // The iterations Box2D's manual recommends: 8 for velocities, 3 for positions.
     void step() override { world_.Step(dt_, 8, 3); }
-    [[nodiscard]] PeerState ball(std::size_t index) const override {
+    [[nodiscard]] PeerState body(std::size_t index) const override {
         const b2Vec2 p = bodies_[index]->GetPosition();
         const b2Vec2 v = bodies_[index]->GetLinearVelocity();
-        return {static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(v.x), static_cast<double>(v.y)};
+        return {static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(v.x), static_cast<double>(v.y),
+                static_cast<double>(bodies_[index]->GetAngularVelocity())};
     }
 
 private:

@@ -428,9 +428,12 @@ BENCH_KINDS = ("accuracy", "speed", "stages", "pile")
          "again from the last run's CSV. `./workbook bench speed --help` lists its options.\n\n"
          "stages [Google Benchmark options]: micro benchmarks of each stage of a step (integrate, detect, "
          "respond, probes).\n\n"
-         "pile [options of bench/pile.py]: chapter 5's pile of frictionless discs dropped into a box, 10 s, for "
-         "N = 400 to 10,000: time per step, deepest overlap, kinetic energy, mean height and discs outside, in "
-         "build/dev/book/bench/pile.{csv,md} (the workbook alone so far).\n\n"
+         "pile [options of bench/pile.py]: chapter 5's pile of frictionless discs dropped into a box, 10 s, in the "
+         "workbook and in Chipmunk, Box2D and Bullet (each on its defaults) for N = 400 to 10,000, and in the workbook "
+         "alone up to 100,000: time per step, deepest overlap, kinetic energy, mean height and discs outside, and the "
+         "workbook's goals met or not, in build/dev/book/bench/pile.{csv,md}, the figure in book/figures/bench/. A run "
+         "over its budget (--budget, 300 s) is stopped and says so. --record also copies the results into "
+         "bench/results/; --quick is a seconds-long run of 16 and 100 discs.\n\n"
          "Each installs libbenchmark-dev and the peers' Debian packages first (with apt) and builds with those "
          "found; a peer that is missing is a row that says so. Never part of ./workbook test.",
          listed=full, refusal=NO_SOLUTIONS)
@@ -468,9 +471,14 @@ def run_bench(args, raw):
     if args.kind == "pile":
         if "-h" in rest or "--help" in rest:
             return run_python("bench.pile", ["--help"])
+        building.prepare_bench()
         building.build("dev", "workbook-pile", to_stderr=True)
-        return run_python("bench.pile", ["--binary", host.built_program(edition.build_dir("dev") / "bench", "workbook-pile"),
-                                         "--out", BOOK / "bench", *rest], cwd=edition.ROOT)
+        status = run_python("bench.pile", ["--binary", host.built_program(edition.build_dir("dev") / "bench", "workbook-pile"),
+                                           "--out", BOOK / "bench", "--figures", BOOK / "figures" / "bench", *rest],
+                            cwd=edition.ROOT)
+        if status == 0:
+            say(f"Table: {BOOK / 'bench' / 'pile.md'}; figure: {BOOK / 'figures' / 'bench' / 'pile.svg'}")
+        return status
     building.prepare_bench()
     prerequisites.setup_tools()
     building.configure("dev")
