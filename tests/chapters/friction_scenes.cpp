@@ -229,3 +229,21 @@ TEST_CASE("no step of a friction scene adds energy", "[friction]") {
         CHECK(largest_response <= 0.0);
     }
 }
+
+TEST_CASE("without friction the responder friction moves the bodies exactly as resting-contact", "[friction]") {
+    const Scene scene = load_scene(std::string(WORKBOOK_SOURCE_DIR) + "/chapters/resting-contact/scenes/pyramid-of-balls.json");
+    REQUIRE(scene.responder == "resting-contact");
+    World plain = make_world(scene, *find_response_model("resting-contact"));
+    World with_friction_pass = make_world(scene, *find_response_model("friction"));
+    const std::size_t steps = std::min<std::size_t>(steps_of(scene), 240);
+    for (std::size_t i = 0; i < steps; ++i) {
+        plain.step();
+        with_friction_pass.step();
+    }
+    for (std::size_t b = 0; b < plain.bodies().size(); ++b) {
+        CAPTURE(b);
+        CHECK(plain.bodies()[b].position == with_friction_pass.bodies()[b].position);
+        CHECK(plain.bodies()[b].velocity == with_friction_pass.bodies()[b].velocity);
+        CHECK(plain.bodies()[b].angular_velocity == with_friction_pass.bodies()[b].angular_velocity);
+    }
+}
