@@ -92,7 +92,7 @@ struct ContactSolverHooks {
 
 /// What one solve did, for probes, figures and the iterations-against-accuracy study.
 struct ContactSolverReport {
-    int velocity_passes = 0;  ///< passes the velocity loop ran
+    int velocity_passes = 0;  ///< passes the velocity loops ran (both phases with friction)
     int position_passes = 0;  ///< passes the position loop ran
     double velocity_residual = 0.0;  ///< the last velocity pass's largest change, m/s
     double position_residual = 0.0;  ///< the last position pass's largest change, m/s
@@ -107,8 +107,11 @@ public:
     /// against gravity (any direction without gravity):
     ///  1. prepare each contact (masses, bounce and bias), warm start from the last step;
     ///  2. up to velocity_iterations passes over all contacts, until nothing approaches;
-    ///     the change of velocity also moves each body over this step (as if the solve had
-    ///     come before the move), and each point's depth is estimated after that move;
+    ///     with a friction pass (chapter 6) first without bounce, friction included, then
+    ///     up to as many passes again along the normals alone for the bounce (Newton's
+    ///     restitution solved together with friction can create energy); the change of
+    ///     velocity also moves each body over this step (as if the solve had come before the
+    ///     move), and each point's depth is estimated after that move;
     ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
     ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
     ContactSolverReport solve(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
@@ -143,6 +146,7 @@ private:
     std::vector<double> height_;        ///< each contact's height along `up`, for the order  ///< the contacts with each point's depth after the velocity solve's move
     std::vector<Remembered> previous_;
     std::vector<Remembered> current_;
+    std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
     std::vector<Vector3> saved_velocity_;
     std::vector<Vector3> saved_angular_velocity_;
 };
