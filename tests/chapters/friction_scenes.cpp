@@ -211,10 +211,9 @@ TEST_CASE("no step of a friction scene adds energy", "[friction]") {
                              "ball-starts-rolling", "ball-with-backspin", "rod-lands-on-its-end"}) {
         CAPTURE(name);
         const Scene scene = friction_scene(name);
-        // A body that bounces (the rod, e = 1) is also moved by the solve's change of velocity
-        // times dt (chapter 5's solver, as if the solve had come before the move), which lifts
-        // it by up to (1 + e) u dt at a landing: its total energy is checked over the scene,
-        // its kinetic energy at every step.
+        // A body that lands fast (the rod, e = 1) arrives sunk into the ground by up to its
+        // approach speed times dt, and removing that overlap lifts it: its total energy is
+        // checked over the scene, its kinetic energy at every step.
         const bool bounces = scene.bodies[0].restitution > 0.0;
         World world = world_of(scene);
         const double m = mover(world).mass(), dt = scene.settings.time_step;
