@@ -25,6 +25,8 @@
 #include <numbers>
 #include <string>
 
+#include "friction.hpp"
+#include "workbook/contact_solver.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/scene.hpp"
 #include "workbook/time_series.hpp"
@@ -251,5 +253,20 @@ TEST_CASE("without friction the responder friction moves the bodies exactly as r
         CHECK(plain.bodies()[b].position == with_friction_pass.bodies()[b].position);
         CHECK(plain.bodies()[b].velocity == with_friction_pass.bodies()[b].velocity);
         CHECK(plain.bodies()[b].angular_velocity == with_friction_pass.bodies()[b].angular_velocity);
+    }
+}
+
+TEST_CASE("the engine's friction_tangents, which warm starts friction, is the reference's tangent_basis", "[friction]") {
+    // Chapter 5's warm start applies the remembered friction impulses along the engine's
+    // tangents; the friction pass accumulated them along step 2's. Different pairs would warm
+    // start each step with friction turned the wrong way.
+    const double s = std::sqrt(1.0 / 3.0);
+    for (const Vector3& n : {Vector3{0, 0, 1}, Vector3{0, 0, -1}, Vector3{1, 0, 0}, Vector3{0, -1, 0}, Vector3{s, s, s},
+                             normalized(Vector3{0.5, 0, std::sqrt(3.0) / 2}), normalized(Vector3{1e-9, 1, -1e-12})}) {
+        CAPTURE(n.x, n.y, n.z);
+        const auto engine = friction_tangents(n);
+        const auto chapter = friction::tangent_basis(n);
+        CHECK(engine[0] == chapter[0]);
+        CHECK(engine[1] == chapter[1]);
     }
 }
