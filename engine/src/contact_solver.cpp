@@ -21,6 +21,26 @@ void turn_by(RigidBody& body, const Vector3& turn) {
     body.update_world_inertia();
 }
 
+/// The warm start of a model with friction (chapter 6): at every point the impulse the
+/// same point accumulated last step, J = normal n + friction[0] t1 + friction[1] t2, with the
+/// model's own tangents, applied as chapter 5's warm start applies it (+J on body 1, -J on
+/// body 2, angular terms included). Done here rather than by the chapter's warm_start so that
+/// the friction impulses are always applied along the tangents they were accumulated along.
+void warm_start_with_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses,
+                              std::array<Vector3, 2> (*tangents)(const Vector3&)) {
+    const auto [t1, t2] = tangents(contact.normal);
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        const PointImpulse& p = impulses.points[i];
+        const Vector3 j = p.normal * contact.normal + p.friction[0] * t1 + p.friction[1] * t2;
+        if (j == Vector3{}) continue;
+        const Vector3& at = contact.points[i].position;
+        body1.velocity += body1.inverse_mass * j;
+        body1.angular_velocity += body1.inverse_inertia_world * cross(at - body1.position, j);
+        body2.velocity -= body2.inverse_mass * j;
+        body2.angular_velocity -= body2.inverse_inertia_world * cross(at - body2.position, j);
+    }
+}
+
 }  // namespace
 
 std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
@@ -116,9 +136,13 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
         hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
     }
     if (settings.warm_start) {
+        const bool with_friction = hooks.solve_friction != nullptr && hooks.tangents != nullptr;
         for (std::size_t c = 0; c < contacts.size(); ++c) {
             const Contact& contact = contacts[c];
-            hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
+            if (with_friction)
+                warm_start_with_friction(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], hooks.tangents);
+            else
+                hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
         }
     }
 

@@ -270,3 +270,24 @@ TEST_CASE("the engine's friction_tangents, which warm starts friction, is the re
         CHECK(engine[1] == chapter[1]);
     }
 }
+
+TEST_CASE("the friction model's warm start does not depend on chapter 5's warm_start", "[friction]") {
+    // The solver warm starts a model with friction itself, along the model's tangents: a
+    // chapter 5 warm_start that applied only the normal impulses, or nothing, changes nothing.
+    static constexpr ContactSolverHooks ignored_warm_start = [] {
+        ContactSolverHooks hooks = friction::hooks;
+        hooks.warm_start = [](RigidBody&, RigidBody&, const Contact&, const ContactImpulses&) {};
+        return hooks;
+    }();
+    const Scene scene = friction_scene("block-on-incline-sticks");
+    World usual = world_of(scene);
+    World other = make_world(scene, ResponseModel{"friction", nullptr, nullptr, &ignored_warm_start});
+    for (int i = 0; i < 120; ++i) {
+        usual.step();
+        other.step();
+    }
+    CHECK(usual.contact_solver_report().warm_started_points > 0);
+    CHECK(usual.bodies()[0].position == other.bodies()[0].position);
+    CHECK(usual.bodies()[0].velocity == other.bodies()[0].velocity);
+    CHECK(usual.bodies()[0].angular_velocity == other.bodies()[0].angular_velocity);
+}

@@ -39,8 +39,8 @@ struct PointImpulse {
 
 /// Two unit vectors that with `normal` make a right-handed orthonormal frame (n, t1, t2):
 /// the directions friction acts along. The same normal always gives the same pair. The
-/// engine's copy of chapter 6's step 2 (friction::tangent_basis()), used to warm start the
-/// friction impulses.
+/// engine's copy of chapter 6's step 2 (friction::tangent_basis()), for chapter 5's warm
+/// start.
 std::array<Vector3, 2> friction_tangents(const Vector3& normal);
 
 /// The solver's numbers for every point of one contact (the first `point_count` of the contact).
@@ -74,7 +74,8 @@ struct ContactSolverHooks {
     /// Fills mass, bounce and bias of every point (the impulses are left as the world set them).
     void (*prepare)(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
                     const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt) = nullptr;
-    /// Applies the accumulated normal impulses (the last step's, for warm starting).
+    /// Applies the accumulated normal impulses (the last step's, for warm starting); not called
+    /// for a model with a friction pass and `tangents` (the solver warm starts those itself).
     void (*warm_start)(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) = nullptr;
     /// One pass over the contact's points for the velocities; returns the largest change of a
     /// point's normal velocity, m/s.
@@ -88,6 +89,12 @@ struct ContactSolverHooks {
     /// One pass over the contact's points for the overlap, on bodies whose velocities are the
     /// pseudo-velocities; returns the largest change of a point's normal pseudo-velocity, m/s.
     double (*solve_position)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
+    /// The two tangents solve_friction accumulates `PointImpulse::friction` along (chapter 6's
+    /// friction::tangent_basis()). With a friction pass the solver warm starts each point
+    /// itself, normal and friction impulses along these very tangents, instead of calling
+    /// warm_start: the remembered friction is then applied along the directions it was
+    /// accumulated in, whatever warm_start does with it.
+    std::array<Vector3, 2> (*tangents)(const Vector3& normal) = nullptr;
 };
 
 /// What one solve did, for probes, figures and the iterations-against-accuracy study.
