@@ -154,7 +154,10 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // the centre of mass (a rod landing on its end) friction changes the normal velocity too,
     // and aiming the normal pass at -e u then returns more than the impact brought. Solved
     // apart, the bounce gives back at most e^2 of what stopping the approach took.
-    const bool two_phases = hooks.solve_friction != nullptr;
+    // Only where friction acts: without it the bounce comes as in chapter 5, in one phase.
+    bool two_phases = false;
+    for (std::size_t c = 0; c < contacts.size() && hooks.solve_friction != nullptr && !two_phases; ++c)
+        two_phases = bodies[contacts[c].body1].static_friction * bodies[contacts[c].body2].static_friction > 0.0;
     bool any_bounce = false;
     if (two_phases) {
         bounces_.resize(contacts.size() * max_contact_points);
@@ -182,7 +185,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             if (!(largest > settings.tolerance)) break;
         }
     };
-    velocity_passes(two_phases);
+    velocity_passes(hooks.solve_friction != nullptr);
     if (any_bounce) {
         for (std::size_t c = 0; c < contacts.size(); ++c)
             for (std::size_t i = 0; i < max_contact_points; ++i) impulses_[c].points[i].bounce = bounces_[c * max_contact_points + i];

@@ -24,6 +24,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "friction.hpp"
 #include "workbook/contact_solver.hpp"
@@ -235,6 +236,25 @@ TEST_CASE("no step of a friction scene adds energy", "[friction]") {
         if (!bounces) CHECK(largest_rise <= 0.0);
         CHECK(world.probes().total_energy() <= first + static_cast<double>(steps_of(scene)) * lift + 16 * eps * first);
         CHECK(largest_response <= 0.0);
+    }
+}
+
+TEST_CASE("without friction the responder friction bounces exactly as resting-contact", "[friction]") {
+    // Two balls dropped on the ground with e = 0.8: the bounce comes in one phase, as in chapter 5.
+    std::vector<RigidBody> bodies{make_sphere(1.0, 0.1, {0, 0, 0.5}), make_sphere(2.0, 0.1, {0.05, 0, 0.9}),
+                                  make_immovable_plane({0, 0, 1}, {0, 0, 0})};
+    for (RigidBody& body : bodies) body.restitution = 0.8;
+    const WorldSettings settings{1.0 / 240, {0, 0, -g}};
+    World plain(bodies, settings, *find_response_model("resting-contact"));
+    World with_friction_pass(bodies, settings, *find_response_model("friction"));
+    for (int i = 0; i < 480; ++i) {
+        plain.step();
+        with_friction_pass.step();
+    }
+    for (std::size_t b = 0; b < 2; ++b) {
+        CAPTURE(b);
+        CHECK(plain.bodies()[b].position == with_friction_pass.bodies()[b].position);
+        CHECK(plain.bodies()[b].velocity == with_friction_pass.bodies()[b].velocity);
     }
 }
 
