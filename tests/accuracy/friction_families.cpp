@@ -62,8 +62,7 @@ TEST_CASE("friction family: the thrown ball slides, then rolls at 5/7 v0 from t 
 }
 
 TEST_CASE("friction families: the workbook's runs land near the closed forms", "[accuracy][friction-families]") {
-    // With chapter 5's contact solver (friction_model(); chapter 6's responder at its merge),
-    // measured: incline 0.008 and 0.002, thrown ball 0.083 and 0.012 at 1/60 and 1/240 s.
+    // With chapter 6's responder (friction_model()), measured: incline 0.008 and 0.002, thrown ball 0.083 and 0.012 at 1/60 and 1/240 s.
     const ResponseModel& model = friction_model();
     const FamilyError incline60 = incline_error(discrete(1.0 / 60), model), incline240 = incline_error(discrete(1.0 / 240), model);
     const FamilyError thrown60 = thrown_ball_error(discrete(1.0 / 60), model), thrown240 = thrown_ball_error(discrete(1.0 / 240), model);

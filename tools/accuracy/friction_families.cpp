@@ -11,21 +11,19 @@
 
 namespace workbook::accuracy {
 
-// ---- How the workbook is given a friction coefficient: the one place to change -----------
-// Chapter 6 (`friction`) gives every body a dynamic coefficient "friction" and a static one
-// "static_friction" (RigidBody fields; a pair's coefficient is sqrt(mu1 mu2)) and answers them
-// with its responder "friction". Until that chapter is merged, the workbook's column of these
-// families runs chapter 5's contact solver with its one coefficient for every contact
-// (ContactSolverSettings::friction, scene knob `contact_solver.friction`, responder
-// `resting-contact`), static and dynamic alike. At the merge, switch both functions below:
-//   friction_model():  return chapter_model("friction");
-//   friction_world():  for (RigidBody& b : bodies) { b.friction = mu; b.static_friction = mu; }
-//                      (the ground too: sqrt(mu mu) = mu), and drop the contact_solver line.
+// ---- How the workbook is given a friction coefficient ---------------------------------------
+// Chapter 6 (`friction`): every body carries a dynamic coefficient `friction` and a static one
+// `static_friction`, a pair's coefficient is sqrt(mu1 mu2), and the responder "friction"
+// answers them. The same mu on every body, the ground included, gives the pair mu; static and
+// dynamic are equal here, as in the peers on their defaults.
 
-const ResponseModel& friction_model() { return chapter_model("resting-contact"); }
+const ResponseModel& friction_model() { return chapter_model("friction"); }
 
 World friction_world(std::vector<RigidBody> bodies, WorldSettings settings, const ResponseModel& model, double mu) {
-    settings.contact_solver.friction = mu;
+    for (RigidBody& body : bodies) {
+        body.friction = mu;
+        body.static_friction = mu;
+    }
     return World(std::move(bodies), settings, model);
 }
 
