@@ -51,9 +51,10 @@ LOSS_LAW["angular-impulse"] = "½ (1 − e) Σ Jᵢ uᵢ"  # u_i < 0: each pushi
 DEPTH_PANEL = {"projection", "resting-contact"}
 DEPTH = ("penetration_max", "deepest penetration", 41)
 
-# Responders whose contacts rest rather than hit: no single impact to mark. What the energy
-# panel states instead is the kinetic energy left at the end: zero for bodies come to rest.
-RESTING = {"resting-contact"}
+# Responders whose contacts rest rather than hit (chapter 5's stacks and piles, chapter 6's
+# blocks and balls on the ground): no single impact to mark. What the energy panel states
+# instead is the kinetic energy left at the end: zero for bodies come to rest.
+RESTING = {"resting-contact", "friction"}
 
 
 def final_kinetic(data):

@@ -176,10 +176,11 @@ def read_contacts(path):
     return steps
 
 
-# Responders whose contacts rest (chapter 5's stacks, columns, pyramids and piles): a touch's
+# Responders whose contacts rest (chapter 5's stacks, columns, pyramids and piles, chapter 6's
+# blocks and balls on the ground): a touch's
 # first impulse is a step's share of the weight the solver passes down, found again every step,
 # not the answer to an impact; the pictures of their scenes mark no touches.
-RESTING_RESPONDERS = {"resting-contact"}
+RESTING_RESPONDERS = {"resting-contact", "friction"}
 
 
 def marked_touches(scene, contacts, limit=4):
