@@ -74,13 +74,6 @@ void draw_pair(SeededRandom& random, Case& c, int pinned) {
     c.contact.add_point(c.point, depth);
 }
 
-double draw_restitution(SeededRandom& random) {
-    const double pick = random.uniform(0.0, 1.0);
-    if (pick < 0.15) return 0.0;
-    if (pick < 0.3) return 1.0;
-    return random.uniform(0.0, 1.0);
-}
-
 /// u at `point` along `normal`, from the checker's copy.
 double point_normal_velocity(const Case& c, const Vector3& point, const Vector3& normal) {
     return dot(reference::point_velocity(c.body1, point) - reference::point_velocity(c.body2, point), normal);

@@ -469,6 +469,65 @@ inline void place_pair(SeededRandom& random, Case& c) {
     c.contact.add_point(point, overlap);
 }
 
+/// A pair of spheres along the contact normal for the chapters without spin (1 and 3): masses
+/// with the pair edges (pair_masses()), `pinned` immovable bodies (1: either side, at rest or
+/// kinematic), moving along the normal as `how` says (set_motion()), placed by place_pair(),
+/// and each spinning with probability 0.5 (the angular velocity is not those chapters', and
+/// must come back as it was). False when the motion could not be drawn.
+inline bool draw_pair_moving(SeededRandom& random, Case& c, int pinned, Approach how) {
+    double w1 = 1.0;
+    double w2 = 1.0;
+    pair_masses(random, w1, w2);
+    c.body1 = movable(random, w1);
+    c.body2 = movable(random, w2);
+    c.contact.normal = unit_normal(random);
+    const bool first = chance(random, 0.5);
+    if (pinned >= 1) pin(random, first ? c.body1 : c.body2, 0.5, false);
+    if (pinned == 2) pin(random, first ? c.body2 : c.body1, 0.5, false);
+    if (!set_motion(random, c, how)) return false;
+    place_pair(random, c);
+    for (RigidBody* b : {&c.body1, &c.body2}) {
+        const bool spins = chance(random, 0.5);
+        if (spins) b->angular_velocity = velocity(random);
+    }
+    return true;
+}
+
+/// Any motion along the normal: approaching 0.4, creeping 0.15, separating 0.15, sliding 0.1,
+/// equal velocities 0.1, resting 0.1.
+inline Approach any_motion(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.4) return Approach::approaching;
+    if (pick < 0.55) return Approach::creeping;
+    if (pick < 0.7) return Approach::separating;
+    if (pick < 0.8) return Approach::sliding;
+    if (pick < 0.9) return Approach::equal;
+    return Approach::resting;
+}
+
+/// A motion that does not approach: separating 0.5, sliding 0.2, equal velocities 0.2, resting 0.1.
+inline Approach not_approaching(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.5) return Approach::separating;
+    if (pick < 0.7) return Approach::sliding;
+    if (pick < 0.9) return Approach::equal;
+    return Approach::resting;
+}
+
+/// A restitution argument (chapters 3 and 4): 0 and 1 on purpose, else uniform.
+inline double draw_restitution(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.15) return 0.0;
+    if (pick < 0.3) return 1.0;
+    return random.uniform(0.0, 1.0);
+}
+
+/// |v1| + |v2|: the scale of a velocity answer of the chapters without spin.
+inline double speeds(const Case& c) { return length(c.body1.velocity) + length(c.body2.velocity); }
+
+/// How many bodies of the case are immovable.
+inline int pinned(const Case& c) { return int(c.body1.is_immovable()) + int(c.body2.is_immovable()); }
+
 // ----- Reducing a failing case --------------------------------------------------------------
 
 /// Simpler values than x, simplest first: 0, +-1, its power of ten, x to 1 and 3 digits.
