@@ -9,6 +9,7 @@
 #include "projection.hpp"
 #include "angular-impulse.hpp"
 #include "resting-contact.hpp"
+#include "friction.hpp"
 #include "workbook/restitution.hpp"
 #include "workbook/response_model.hpp"
 
@@ -38,6 +39,8 @@ constexpr std::array models{
     ResponseModel{"angular-impulse-one-by-one", &resolve_points_one_by_one, &projection::correct},
     // Every contact of a step solved together (the world's contact solver calls the steps).
     ResponseModel{"resting-contact", nullptr, nullptr, &resting_contact::hooks},
+    // Chapter 5's solver with chapter 6's Coulomb friction pass after each normal pass.
+    ResponseModel{"friction", nullptr, nullptr, &friction::hooks},
 };
 }  // namespace
 

@@ -73,7 +73,7 @@ double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact
 double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
 /// The functions above as the world's contact solver calls them (response model
-/// `resting-contact`).
-inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, &solve_friction, &solve_position};
+/// `resting-contact`), without friction: chapter 6 (response model `friction`) adds it.
+inline constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, nullptr, &solve_position};
 
 }  // namespace workbook::resting_contact

@@ -129,9 +129,9 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             const std::uint32_t c = order_[k];
             const Contact& contact = contacts[c];
             largest = std::max(largest, hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
-            if (settings.friction > 0.0 && hooks.solve_friction != nullptr)
+            if (hooks.solve_friction != nullptr)
                 largest = std::max(largest, hooks.solve_friction(bodies[contact.body1], bodies[contact.body2], contact,
-                                                                 impulses_[c], settings.friction));
+                                                                 impulses_[c]));
         }
         report.velocity_passes = pass + 1;
         report.velocity_residual = largest;

@@ -304,7 +304,7 @@ Matrix3 solid_inertia(const Shape& shape, double mass) {
 RigidBody read_body(const json& value, const std::string& path, const std::string& file, std::string& name) {
     const Reader body(value, path, file);
     body.only_keys({"name", "shape", "mass", "immovable", "position", "velocity", "angular_velocity", "restitution",
-                    "orientation", "kinematic"});
+                    "friction", "static_friction", "orientation", "kinematic"});
     name = body.text_or("name", path);
 
     RigidBody rb;
@@ -337,6 +337,18 @@ RigidBody read_body(const json& value, const std::string& path, const std::strin
     rb.restitution = body.number_or("restitution", 1.0);
     if (rb.restitution < 0.0 || rb.restitution > 1.0)
         body.fail(body.field("restitution"), "must lie in [0, 1], got " + Reader::format(rb.restitution));
+    // Friction (chapter 6): the dynamic coefficient, and the static one, by default the same.
+    rb.friction = body.number_or("friction", 0.0);
+    if (!(rb.friction >= 0.0 && rb.friction <= scene_limits.max_friction))
+        body.fail(body.field("friction"), "must lie in [0, " + Reader::format(scene_limits.max_friction) + "], got " +
+                                              Reader::format(rb.friction));
+    rb.static_friction = body.number_or("static_friction", rb.friction);
+    if (!(rb.static_friction >= rb.friction && rb.static_friction <= scene_limits.max_friction))
+        body.fail(body.field("static_friction"),
+                  "must lie in [friction, " + Reader::format(scene_limits.max_friction) + "] = [" +
+                      Reader::format(rb.friction) + ", " + Reader::format(scene_limits.max_friction) +
+                      "] (a body starts sliding at least as easily as it keeps sliding), got " +
+                      Reader::format(rb.static_friction));
     if (immovable && rb.velocity != Vector3{})
         body.fail(body.field("velocity"), "an immovable body cannot move; give it no velocity (a moving platform is \"kinematic\": true)");
     if (immovable && rb.angular_velocity != Vector3{})
@@ -363,10 +375,15 @@ PositionCorrection read_position_correction(const Reader& root) {
     return result;
 }
 
-/// The contact solver's knobs (chapter 5): whole numbers of passes, warm starting, friction.
+/// The contact solver's knobs (chapter 5): whole numbers of passes, warm starting, tolerances.
 ContactSolverSettings read_contact_solver(const Reader& root) {
     const Reader knobs(root.required("contact_solver"), "contact_solver", root.file());
-    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "friction", "tolerance", "bounce_threshold"});
+    // Friction was once one knob for every contact; it is now each body's own "friction".
+    if (knobs.has("friction"))
+        knobs.fail(knobs.field("friction"),
+                   "is no longer a knob of the contact solver: give each body its own \"friction\" (the ground "
+                   "too; a pair takes the geometric mean) and use the responder \"friction\"");
+    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "tolerance", "bounce_threshold"});
     ContactSolverSettings result;
     auto passes = [&](const char* key, int fallback) {
         const double v = knobs.number_or(key, fallback);
@@ -377,8 +394,6 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
     result.velocity_iterations = passes("velocity_iterations", result.velocity_iterations);
     result.position_iterations = passes("position_iterations", result.position_iterations);
     result.warm_start = knobs.boolean_or("warm_start", result.warm_start);
-    result.friction = knobs.number_or("friction", result.friction);
-    if (result.friction < 0.0) knobs.fail(knobs.field("friction"), "must be zero or positive, got " + Reader::format(result.friction));
     result.tolerance = knobs.number_or("tolerance", result.tolerance);
     if (!(result.tolerance > 0.0)) knobs.fail(knobs.field("tolerance"), "must be positive, got " + Reader::format(result.tolerance));
     result.bounce_threshold = knobs.number_or("bounce_threshold", result.bounce_threshold);
@@ -491,6 +506,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source, std::sp
                     "position_correction", "sweep", "bodies", "contact_timing", "swept_spheres", "contact_solver"});
 
     Scene scene;
+    scene.source = source;
     scene.title = root.text("title");
     scene.description = root.text_or("description", "");
     scene.responder = root.text("responder");
@@ -546,6 +562,16 @@ Scene load_scene(const std::filesystem::path& path, std::span<const std::string_
 }
 
 World make_world(const Scene& scene, const ResponseModel& model) {
+    // A body with friction needs a model with a friction pass (chapter 6's responder
+    // "friction"): any other would silently let it slide as if on ice.
+    const bool has_friction_pass = model.contact_solver != nullptr && model.contact_solver->solve_friction != nullptr;
+    for (std::size_t i = 0; i < scene.bodies.size() && !has_friction_pass; ++i) {
+        const RigidBody& body = scene.bodies[i];
+        if (body.friction > 0.0 || body.static_friction > 0.0)
+            throw SceneError(scene.source, "bodies[" + std::to_string(i) + "]." + (body.friction > 0.0 ? "friction" : "static_friction"),
+                             "the responder \"" + std::string(model.name) +
+                                 "\" has no friction; use the responder \"friction\" (chapter 6) or remove the field");
+    }
     World world(scene.bodies, scene.settings, model);
     world.name_bodies(scene.body_names);
     return world;

@@ -31,13 +31,16 @@ struct PointImpulse {
     double bias = 0.0;     ///< normal pseudo-velocity the position pass aims for, m/s: the overlap to remove / dt
     double normal = 0.0;   ///< impulse accumulated along +n on body 1 this step, kg m/s; kept >= 0
     double pseudo = 0.0;   ///< pseudo-impulse accumulated by the position pass this step, kg m/s; kept >= 0
-    /// Friction impulse accumulated along the two tangents of friction_tangents(), kg m/s;
-    /// its length kept <= the friction coefficient times `normal`.
+    /// Friction impulse accumulated along the two tangents of friction_tangents(), kg m/s
+    /// (chapter 6); its length kept within the friction cone of `normal`. Warm started from
+    /// the last step like `normal`; always 0 for a model without a friction pass.
     std::array<double, 2> friction{};
 };
 
 /// Two unit vectors that with `normal` make a right-handed orthonormal frame (n, t1, t2):
-/// the directions friction acts along. The same normal always gives the same pair.
+/// the directions friction acts along. The same normal always gives the same pair. The
+/// engine's copy of chapter 6's step 2 (friction::tangent_basis()), used to warm start the
+/// friction impulses.
 std::array<Vector3, 2> friction_tangents(const Vector3& normal);
 
 /// The solver's numbers for every point of one contact (the first `point_count` of the contact).
@@ -54,8 +57,6 @@ struct ContactSolverSettings {
     double tolerance = 1e-9;
     /// Start each step from the impulses the same points needed in the last step.
     bool warm_start = true;
-    /// Coulomb friction coefficient of every contact (0: frictionless, as the pile of discs).
-    double friction = 0.0;
     /// A point that approaches slower than this (m/s) gets no bounce: resting bodies would
     /// otherwise bounce on gravity's own speed of one step (g dt = 0.16 m/s at 60 Hz).
     double bounce_threshold = 0.5;
@@ -78,10 +79,12 @@ struct ContactSolverHooks {
     /// One pass over the contact's points for the velocities; returns the largest change of a
     /// point's normal velocity, m/s.
     double (*solve_velocity)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
-    /// One pass over the contact's points for friction (called after solve_velocity when the
-    /// friction coefficient is not 0); returns the largest change of a point's tangent velocity, m/s.
-    double (*solve_friction)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-                             double friction) = nullptr;
+    /// One pass over the contact's points for Coulomb friction (chapter 6), called after
+    /// solve_velocity on the same contact, with the coefficients of the bodies
+    /// (RigidBody::friction, RigidBody::static_friction); returns the largest change of a
+    /// point's slip, m/s. Null for a model without friction: a scene whose bodies have friction
+    /// is then refused (workbook::make_world()).
+    double (*solve_friction)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
     /// One pass over the contact's points for the overlap, on bodies whose velocities are the
     /// pseudo-velocities; returns the largest change of a point's normal pseudo-velocity, m/s.
     double (*solve_position)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;

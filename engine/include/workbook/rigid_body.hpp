@@ -23,6 +23,12 @@ struct RigidBody {
     Vector3 velocity{};                          ///< m/s
     Vector3 angular_velocity{};                  ///< rad/s, world frame
     double restitution = 1.0;                    ///< coefficient of restitution e in [0, 1]
+    /// Coefficient of dynamic (sliding) friction, >= 0 (chapter 6); a pair's is the geometric
+    /// mean of its bodies' (friction::mix_coefficients()). 0: frictionless.
+    double friction = 0.0;
+    /// Coefficient of static friction, >= `friction`: a point sticks while its friction
+    /// impulse needs at most this times its normal impulse (chapter 6).
+    double static_friction = 0.0;
     Shape shape{};                               ///< collision geometry, in body space
 
     /// True for an immovable body (infinite mass, inverse_mass == 0).

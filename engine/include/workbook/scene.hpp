@@ -16,6 +16,7 @@ namespace workbook {
 
 /// A scene file after validation: everything needed to build a World and run it.
 struct Scene {
+    std::string source;             ///< the file (or source name) it was read from, for errors
     std::string title;              ///< one line, shown on figures
     std::string description;        ///< what the scene shows and what to expect
     std::string responder;          ///< name of a ResponseModel

@@ -46,6 +46,9 @@ struct SceneLimits {
     double max_turn_per_step = 1024.0;
     /// m/s^2, per gravity component (100 g is about 981 m/s^2).
     double max_gravity = 1e6;
+    /// Largest coefficient of friction (static or dynamic). Real pairs lie below about 2
+    /// (silicone rubber); 10 leaves room for experiments, and mu J_n stays finite.
+    double max_friction = 10.0;
 };
 
 /// The limits the scene loader applies.
