@@ -9,10 +9,12 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "feedback.hpp"
 #include "friction.hpp"
+#include "friction_cases.hpp"
 #include "friction_laws.hpp"
 
 using namespace workbook;
@@ -245,4 +247,26 @@ TEST_CASE("a ball leaving the ground takes back the friction warm starting gave 
                  situation + " (the accumulated friction after the pass)");
     expect_close(laws::pass_apply, Vector3{0.7, 0, 0.5} - given, ball.velocity, rounding_tolerance(1.0, 64), "m/s",
                  situation + " (its velocity: the friction taken back, " + format(-given) + " kg m/s)");
+}
+
+TEST_CASE("a ball on a 30 degree slope: rolls at 5/7 g sin theta with mu_s = 0.2, slides at g (sin - mu_d cos) with mu_s = 0.15",
+          "[friction][step:5:solve-friction][points:3]") {
+    const double theta = std::numbers::pi / 6;  // 2/7 tan theta = 0.165
+    const double g = 9.81;
+    const double dt = 1.0 / 60;
+    const int steps = 60;
+    // Rolls: mu_s = 0.2 holds the contact point (mu_d = 0.1 could not).
+    friction_cases::BallOnSlope rolling = friction_cases::ball_on_slope(2.0, 0.25, 0.1, 0.2);
+    friction_cases::roll_down(rolling, theta, dt, steps, g);
+    const double t = steps * dt;
+    expect_close(laws::slope, 5.0 / 7.0 * g * std::sin(theta) * t, rolling.ball.velocity.x, rounding_tolerance(5.0, 4096), "m/s",
+                 "ball of 2 kg, r = 0.25 m, on a slope of 30 degrees, mu_s = 0.2, mu_d = 0.1, after 60 steps of 1/60 s");
+    // Slides: mu_s = 0.15 cannot hold it; it slides with mu_d = 0.1.
+    friction_cases::BallOnSlope sliding = friction_cases::ball_on_slope(2.0, 0.25, 0.1, 0.15);
+    friction_cases::roll_down(sliding, theta, dt, steps, g);
+    const std::string situation = "ball of 2 kg, r = 0.25 m, on a slope of 30 degrees, mu_s = 0.15, mu_d = 0.1, after 60 steps of 1/60 s";
+    expect_close(laws::slope, g * (std::sin(theta) - 0.1 * std::cos(theta)) * t, sliding.ball.velocity.x, rounding_tolerance(5.0, 4096),
+                 "m/s", situation + " (its speed down the slope)");
+    expect_close(laws::slope, 2.5 * 0.1 * g * std::cos(theta) / 0.25 * t, sliding.ball.angular_velocity.y, rounding_tolerance(10.0, 4096),
+                 "rad/s", situation + " (its spin)");
 }

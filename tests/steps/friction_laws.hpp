@@ -69,10 +69,11 @@ inline const Law pass_change{
     "after applying a point's impulse measure its relative velocity again, subtract the slip before, drop the part "
     "along the normal and keep the largest length; a velocity, not an impulse"};
 inline const Law slope{
-    "a block on a slope sticks below the angle of repose and slides above it",
-    "on a slope of angle theta a block stays put when tan theta <= mu_s; when it slides it accelerates at "
-    "g (sin theta - mu_d cos theta) down the slope",
-    "the world calls your solve_friction() after every normal pass: it must accumulate within the cone of each point's "
-    "accumulated normal impulse, with mu_s to decide whether the point sticks and mu_d once it slides"};
+    "a ball on a slope rolls while static friction can hold its contact point, and slides beyond",
+    "on a slope of angle theta a solid ball rolls without slipping, accelerating at 5/7 g sin theta, while "
+    "mu_s >= 2/7 tan theta; beyond that it slides, accelerating at g (sin theta - mu_d cos theta) and spinning up at "
+    "5/2 mu_d g cos theta / r",
+    "mu_s decides whether a point sticks (the sum within mu_s J_n), mu_d is the friction of a point that slides: "
+    "mix_coefficients() of the bodies' static_friction for the first and of their friction for the second"};
 
 }  // namespace workbook::friction_laws
