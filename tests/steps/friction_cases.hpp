@@ -11,6 +11,21 @@
 
 namespace workbook::friction_cases {
 
+/// A pair's coefficient as the student's own step 1 mixes `mu1` and `mu2`, so that the cases
+/// of step 5 grade the pass and not step 1 again; the geometric mean itself while step 1 gives
+/// no positive finite value for positive coefficients (unfinished).
+inline double pair_coefficient(double mu1, double mu2) {
+    const double mixed = friction::mix_coefficients(mu1, mu2);
+    if (mu1 > 0.0 && mu2 > 0.0 && !(std::isfinite(mixed) && mixed > 0.0)) return std::sqrt(mu1 * mu2);
+    return mixed;
+}
+
+/// The friction impulse that stops a slip needing `stop` (kg m/s), or, beyond mu_s J_n, the
+/// sliding one mu_d J_n.
+inline double coulomb(double stop, double normal_impulse, double mu_s, double mu_d) {
+    return stop <= mu_s * normal_impulse ? stop : mu_d * normal_impulse;
+}
+
 /// A solid ball of mass `mass` and radius `radius` resting on the ground z = 0, with dynamic
 /// and static coefficients `mu_d` and `mu_s` (the ground has the same, so the pair has them too).
 struct BallOnSlope {
@@ -46,6 +61,27 @@ inline void roll_down(BallOnSlope& s, double theta, double dt, int steps, double
         s.ball.velocity.z = 0.0;
         (void)friction::solve_friction(s.ball, s.ground, s.contact, impulses);
     }
+}
+
+}  // namespace workbook::friction_cases
+
+namespace workbook::friction_cases {
+
+/// The speed down the slope and the spin of a ball after roll_down() for `t` seconds, from the
+/// laws: rolling at 5/7 g sin theta while mu_s >= 2/7 tan theta, else sliding at
+/// g (sin theta - mu_d cos theta) and spinning up at 5/2 mu_d g cos theta / r.
+struct SlopeMotion {
+    double speed = 0.0;
+    double spin = 0.0;
+    bool rolls = false;
+};
+
+inline SlopeMotion slope_motion(double theta, double g, double t, double radius, double mu_s, double mu_d) {
+    if (mu_s >= 2.0 / 7.0 * std::tan(theta)) {
+        const double v = 5.0 / 7.0 * g * std::sin(theta) * t;
+        return {v, v / radius, true};
+    }
+    return {g * (std::sin(theta) - mu_d * std::cos(theta)) * t, 2.5 * mu_d * g * std::cos(theta) / radius * t, false};
 }
 
 }  // namespace workbook::friction_cases
