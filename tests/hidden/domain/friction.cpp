@@ -288,19 +288,51 @@ struct PassAnswer {
 
 Vector3 point_velocity(const RigidBody& b, const Vector3& p) { return b.velocity + cross(b.angular_velocity, p - b.position); }
 
+// The student's own parts, each in place of the reference's where it has been written: an
+// unfinished part (one that returns 0 or does nothing where the reference does something) is
+// replaced by the reference's, so that a pass that does nothing never matches a pass built from
+// parts that do nothing.
+
+double own_mix(double mu1, double mu2) {
+    const double mixed = friction::mix_coefficients(mu1, mu2);
+    return mu1 > 0.0 && mu2 > 0.0 && !(mixed > 0.0) ? reference::mix_coefficients(mu1, mu2) : mixed;
+}
+
+std::array<Vector3, 2> own_basis(const Vector3& normal) {
+    const std::array<Vector3, 2> t = friction::tangent_basis(normal);
+    return length(t[0]) > 0.0 || length(t[1]) > 0.0 ? t : reference::tangent_basis(normal);
+}
+
+double own_tangent_mass(const RigidBody& body1, const RigidBody& body2, const Vector3& point, const Vector3& tangent) {
+    const double mass = friction::tangent_mass(body1, body2, point, tangent);
+    return mass == 0.0 ? reference::tangent_mass(body1, body2, point, tangent) : mass;
+}
+
+std::array<double, 2> own_accumulate(std::array<double, 2>& accumulated, const std::array<double, 2>& increment, double normal_impulse,
+                                     double mu_s, double mu_d) {
+    std::array<double, 2> sum = accumulated;
+    const std::array<double, 2> applied = friction::accumulate_friction(sum, increment, normal_impulse, mu_s, mu_d);
+    const bool inert = sum == accumulated && applied == std::array<double, 2>{};
+    if (!inert) {
+        accumulated = sum;
+        return applied;
+    }
+    return reference::accumulate_friction(accumulated, increment, normal_impulse, mu_s, mu_d);
+}
+
 /// The pass as the header writes it down, from the student's own steps 1 to 4, on the checker's
 /// copy of the input; its slip and its impulse at each point are the laws' own formulas.
 PassAnswer pass_from_students_parts(const Case& c) {
-    PassAnswer a{c.body1, c.body2, c.impulses, 0.0, friction::tangent_basis(c.contact.normal)};
-    const double mu_s = friction::mix_coefficients(c.body1.static_friction, c.body2.static_friction);
-    const double mu_d = friction::mix_coefficients(c.body1.friction, c.body2.friction);
+    PassAnswer a{c.body1, c.body2, c.impulses, 0.0, own_basis(c.contact.normal)};
+    const double mu_s = own_mix(c.body1.static_friction, c.body2.static_friction);
+    const double mu_d = own_mix(c.body1.friction, c.body2.friction);
     for (std::size_t i = 0; i < c.contact.point_count; ++i) {
         PointImpulse& p = a.impulses.points[i];
         const Vector3& at = c.contact.points[i].position;
         const Vector3 slip = point_velocity(a.body1, at) - point_velocity(a.body2, at);
         std::array<double, 2> increment{};
-        for (std::size_t d = 0; d < 2; ++d) increment[d] = -friction::tangent_mass(a.body1, a.body2, at, a.tangents[d]) * dot(slip, a.tangents[d]);
-        const std::array<double, 2> applied = friction::accumulate_friction(p.friction, increment, p.normal, mu_s, mu_d);
+        for (std::size_t d = 0; d < 2; ++d) increment[d] = -own_tangent_mass(a.body1, a.body2, at, a.tangents[d]) * dot(slip, a.tangents[d]);
+        const std::array<double, 2> applied = own_accumulate(p.friction, increment, p.normal, mu_s, mu_d);
         const Vector3 j = applied[0] * a.tangents[0] + applied[1] * a.tangents[1];
         if (j == Vector3{}) continue;
         a.body1.velocity += a.body1.inverse_mass * j;
@@ -314,15 +346,6 @@ PassAnswer pass_from_students_parts(const Case& c) {
 }
 
 Vector3 friction_vector(const PointImpulse& p, const std::array<Vector3, 2>& t) { return p.friction[0] * t[0] + p.friction[1] * t[1]; }
-
-/// Whether a pass changed anything: a velocity, a spin or a point's friction.
-bool acts(const Case& c, const PassAnswer& a) {
-    bool changed = !(a.body1.velocity == c.body1.velocity) || !(a.body1.angular_velocity == c.body1.angular_velocity) ||
-                   !(a.body2.velocity == c.body2.velocity) || !(a.body2.angular_velocity == c.body2.angular_velocity);
-    for (std::size_t i = 0; i < c.contact.point_count; ++i)
-        changed = changed || a.impulses.points[i].friction != c.impulses.points[i].friction;
-    return changed;
-}
 
 bool answer_finite(const PassAnswer& a) {
     bool finite = is_finite(a.body1.velocity) && is_finite(a.body1.angular_velocity) && is_finite(a.body2.velocity) &&
@@ -403,10 +426,8 @@ Verdict judge_pass(const Case& c) {
     const PassTolerance t = pass_tolerance(c);
     const Verdict against_reference = compare_pass(c, actual, expected, t);
     if (!against_reference.failed()) return {};
-    // The pass built from the student's own parts, where those parts do something wherever the
-    // reference's pass does (an unfinished part that returns 0 builds a pass that does nothing).
     const PassAnswer own = pass_from_students_parts(c);
-    if (answer_finite(own) && (acts(c, own) || !acts(c, expected)) && !compare_pass(c, actual, own, t).failed()) return {};
+    if (answer_finite(own) && !compare_pass(c, actual, own, t).failed()) return {};
     return against_reference;
 }
 
@@ -554,5 +575,6 @@ TEST_CASE("sampled contacts of 1 to 4 points between spinning bodies, immovable 
           "[friction][step:5:solve-friction][points:4]") {
     sample(
         605, {.contact = true, .spin = true, .impulses = true}, [](SeededRandom& random, Case& c) { return draw_pass(random, c); },
-        [](const Case& c) { return judge_pass(c); }, [](const Case& c) { return c.contact.point_count >= 1; });
+        [](const Case& c) { return judge_pass(c); },
+        [](const Case& c) { return c.contact.point_count >= 1 && !(c.body1.is_immovable() && c.body2.is_immovable()); });
 }
