@@ -354,10 +354,23 @@ bool answer_finite(const PassAnswer& a) {
     return finite;
 }
 
-/// The student's answer against one right answer: the bodies, each point's friction as a
-/// vector (the student's read in the student's tangents, the expected one in its own), and
-/// the returned change.
+/// The student's answer against one right answer: each point's friction as a vector (the
+/// student's read in the student's tangents, the expected one in its own), then the bodies,
+/// then the returned change. A point's friction is judged by the law of its case: no push, a
+/// point that sticks (its slip stopped), or one on the rim of the cone.
 Verdict compare_pass(const Case& c, const PassAnswer& actual, const PassAnswer& expected, const PassTolerance& t) {
+    const double mu_s = reference::mix_coefficients(c.body1.static_friction, c.body2.static_friction);
+    for (std::size_t i = 0; i < c.contact.point_count; ++i) {
+        const Vector3 want = friction_vector(expected.impulses.points[i], expected.tangents);
+        const Vector3 is = friction_vector(actual.impulses.points[i], actual.tangents);
+        const double normal = c.impulses.points[i].normal;
+        const bool sticks = length(want) < mu_s * normal * (1.0 - 1e-9);
+        const Law& law = normal == 0.0 ? laws::no_push : sticks ? laws::slip_stops : laws::pass_cone;
+        if (Verdict v = compare(law, "point " + std::to_string(i + 1) + "'s friction, friction[0] t1 + friction[1] t2, after solve_friction",
+                                "kg m/s", want, is, t.friction);
+            v.failed())
+            return v;
+    }
     for (int side = 1; side <= 2; ++side) {
         const RigidBody& was = side == 1 ? c.body1 : c.body2;
         const RigidBody& is = side == 1 ? actual.body1 : actual.body2;
@@ -378,15 +391,6 @@ Verdict compare_pass(const Case& c, const PassAnswer& actual, const PassAnswer& 
             return v;
         if (Verdict v = compare(laws::pass_apply, who + "angular velocity after solve_friction", "rad/s", want.angular_velocity,
                                 is.angular_velocity, side == 1 ? t.w1 : t.w2);
-            v.failed())
-            return v;
-    }
-    for (std::size_t i = 0; i < c.contact.point_count; ++i) {
-        const Vector3 want = friction_vector(expected.impulses.points[i], expected.tangents);
-        const Vector3 is = friction_vector(actual.impulses.points[i], actual.tangents);
-        const Law& law = c.impulses.points[i].normal == 0.0 ? laws::no_push : laws::pass_cone;
-        if (Verdict v = compare(law, "point " + std::to_string(i + 1) + "'s friction, friction[0] t1 + friction[1] t2, after solve_friction",
-                                "kg m/s", want, is, t.friction);
             v.failed())
             return v;
     }
