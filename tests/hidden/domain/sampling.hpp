@@ -797,7 +797,7 @@ inline std::string case_text(const Case& c, Reads reads) {
         for (std::size_t i = 0; i < c.contact.point_count; ++i) {
             const PointImpulse& p = c.impulses.points[i];
             s += "; point " + std::to_string(i + 1) + "'s accumulated normal impulse " + format(p.normal) + " kg m/s, friction (" +
-                 format(p.friction[0]) + ", " + format(p.friction[1]) + ")";
+                 format(p.friction[0]) + ", " + format(p.friction[1]) + "), normal effective mass " + format(p.mass) + " kg";
         }
     if (reads.tangent) s += "; tangent " + format(c.tangent);
     if (reads.mix) s += "; mu1 = " + format(c.mu1) + ", mu2 = " + format(c.mu2);
