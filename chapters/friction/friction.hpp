@@ -101,10 +101,11 @@ std::array<double, 2> accumulate_friction(std::array<double, 2>& accumulated, co
 double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
 /// Chapter 5's contact solver with this chapter's friction pass (response model `friction`).
-/// The friction impulses are warm started by chapter 5's resting_contact::warm_start(), along
-/// workbook::friction_tangents(), the engine's copy of step 2.
-inline constexpr ContactSolverHooks hooks{&resting_contact::prepare, &resting_contact::warm_start,
+/// The solver warm starts each point itself, the normal impulse and the friction impulses
+/// along tangent_basis(), so that remembered friction is applied along the tangents it was
+/// accumulated along (ContactSolverHooks::tangents).
+inline constexpr ContactSolverHooks hooks{&resting_contact::prepare,        &resting_contact::warm_start,
                                           &resting_contact::solve_velocity, &solve_friction,
-                                          &resting_contact::solve_position};
+                                          &resting_contact::solve_position, &tangent_basis};
 
 }  // namespace workbook::friction

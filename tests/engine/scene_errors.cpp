@@ -10,7 +10,10 @@
 #include <string>
 #include <string_view>
 
+#include "workbook/contact_solver.hpp"
+#include "workbook/response_model.hpp"
 #include "workbook/scene.hpp"
+#include "workbook/world.hpp"
 
 using namespace workbook;
 using Catch::Matchers::ContainsSubstring;
@@ -72,9 +75,9 @@ TEST_CASE("scene error messages read FILE: FIELD: PROBLEM, word for word", "[sce
         scene_with_second_body(R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": 1, "veloctiy": [1, 0, 0]})"),
         "bodies[1].veloctiy",
         "unknown key (allowed here: name, shape, mass, immovable, position, velocity, angular_velocity, restitution, "
-        "orientation, kinematic)",
+        "friction, static_friction, orientation, kinematic)",
         "bad.json: bodies[1].veloctiy: unknown key (allowed here: name, shape, mass, immovable, position, velocity, "
-        "angular_velocity, restitution, orientation, kinematic)");
+        "angular_velocity, restitution, friction, static_friction, orientation, kinematic)");
     check_message(scene_with_second_body(R"({"shape": {"type": "sphere", "radius": 0.5}, "mass": "2"})"),
                   "bodies[1].mass", R"(must be a number, got the string "2")",
                   R"(bad.json: bodies[1].mass: must be a number, got the string "2")");
@@ -247,6 +250,18 @@ TEST_CASE("body-level rules: restitution, planes, immovable bodies, shapes", "[s
                         R"({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "restitution": -0.25})")),
                     "bodies[1].restitution", "must lie in [0, 1], got -0.25");
     }
+    SECTION("negative friction") {
+        check_parts(error_from(scene_with_second_body(
+                        R"({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "friction": -0.5})")),
+                    "bodies[1].friction", "must lie in [0, 10], got -0.5");
+    }
+    SECTION("static friction below the dynamic one") {
+        check_parts(error_from(scene_with_second_body(
+                        R"({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "friction": 0.5, "static_friction": 0.4})")),
+                    "bodies[1].static_friction",
+                    "must lie in [friction, 10] = [0.5, 10] (a body starts sliding at least as easily as it keeps "
+                    "sliding), got 0.4");
+    }
     SECTION("a plane that is not immovable") {
         check_parts(error_from(scene_with_second_body(R"({"shape": {"type": "plane", "normal": [0, 1, 0]}, "mass": 5})")),
                     "bodies[1].immovable", "a plane must be immovable");
@@ -391,8 +406,38 @@ TEST_CASE("the contact solver's knobs are checked", "[scene][errors]") {
         return std::string("no error");
     };
     CHECK(problem(R"({"velocity_iterations": 2.5})") == "contact_solver.velocity_iterations: must be a whole number from 0 to 10000, got 2.5");
-    CHECK(problem(R"({"friction": -1})") == "contact_solver.friction: must be zero or positive, got -1");
+    CHECK(problem(R"({"friction": 0.5})") ==
+          "contact_solver.friction: is no longer a knob of the contact solver: give each body its own \"friction\" (the "
+          "ground too; a pair takes the geometric mean) and use the responder \"friction\"");
     CHECK(problem(R"({"warm_start": 1})") == "contact_solver.warm_start: must be true or false, got the number 1");
     CHECK(problem(R"({"iterations": 5})").starts_with("contact_solver.iterations: unknown key"));
-    CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false, "friction": 0.5})") == "no error");
+    CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false})") == "no error");
+}
+
+TEST_CASE("friction: static defaults to dynamic, and a responder without friction refuses it", "[scene][errors]") {
+    const std::string start = R"({"title": "t", "responder": "r", "time_step": 0.01, "duration": 1, "bodies": [
+        {"shape": {"type": "sphere", "radius": 1}, "mass": 1, "position": [0, 0, 2]}, )";
+    const Scene plain = parse_scene(start + R"({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "friction": 0.3}]})", "f.json");
+    CHECK(plain.bodies[0].friction == 0.0);
+    CHECK(plain.bodies[0].static_friction == 0.0);
+    CHECK(plain.bodies[1].friction == 0.3);
+    CHECK(plain.bodies[1].static_friction == 0.3);
+    const Scene both = parse_scene(
+        start + R"({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "friction": 0.3, "static_friction": 0.6}]})", "f.json");
+    CHECK(both.bodies[1].static_friction == 0.6);
+
+    // A contact solver without a friction pass (chapter 5's) and no solver at all: refused,
+    // naming the file and the body's field.
+    const ContactSolverHooks frictionless{};
+    for (const ResponseModel& model : {ResponseModel{"plain", nullptr, nullptr}, ResponseModel{"solver", nullptr, nullptr, &frictionless}}) {
+        try {
+            (void)make_world(plain, model);
+            FAIL("a body with friction was accepted by the responder " << model.name);
+        } catch (const SceneError& error) {
+            CHECK(error.file() == "f.json");
+            CHECK(error.field() == "bodies[1].friction");
+            CHECK(error.problem() == "the responder \"" + std::string(model.name) +
+                                         "\" has no friction; use the responder \"friction\" (chapter 6) or remove the field");
+        }
+    }
 }

@@ -39,8 +39,8 @@ struct PointImpulse {
 
 /// Two unit vectors that with `normal` make a right-handed orthonormal frame (n, t1, t2):
 /// the directions friction acts along. The same normal always gives the same pair. The
-/// engine's copy of chapter 6's step 2 (friction::tangent_basis()), used to warm start the
-/// friction impulses.
+/// engine's copy of chapter 6's step 2 (friction::tangent_basis()), for chapter 5's warm
+/// start.
 std::array<Vector3, 2> friction_tangents(const Vector3& normal);
 
 /// The solver's numbers for every point of one contact (the first `point_count` of the contact).
@@ -74,7 +74,8 @@ struct ContactSolverHooks {
     /// Fills mass, bounce and bias of every point (the impulses are left as the world set them).
     void (*prepare)(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
                     const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt) = nullptr;
-    /// Applies the accumulated normal impulses (the last step's, for warm starting).
+    /// Applies the accumulated normal impulses (the last step's, for warm starting); not called
+    /// for a model with a friction pass and `tangents` (the solver warm starts those itself).
     void (*warm_start)(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) = nullptr;
     /// One pass over the contact's points for the velocities; returns the largest change of a
     /// point's normal velocity, m/s.
@@ -88,11 +89,17 @@ struct ContactSolverHooks {
     /// One pass over the contact's points for the overlap, on bodies whose velocities are the
     /// pseudo-velocities; returns the largest change of a point's normal pseudo-velocity, m/s.
     double (*solve_position)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) = nullptr;
+    /// The two tangents solve_friction accumulates `PointImpulse::friction` along (chapter 6's
+    /// friction::tangent_basis()). With a friction pass the solver warm starts each point
+    /// itself, normal and friction impulses along these very tangents, instead of calling
+    /// warm_start: the remembered friction is then applied along the directions it was
+    /// accumulated in, whatever warm_start does with it.
+    std::array<Vector3, 2> (*tangents)(const Vector3& normal) = nullptr;
 };
 
 /// What one solve did, for probes, figures and the iterations-against-accuracy study.
 struct ContactSolverReport {
-    int velocity_passes = 0;  ///< passes the velocity loop ran
+    int velocity_passes = 0;  ///< passes the velocity loops ran (both phases with friction)
     int position_passes = 0;  ///< passes the position loop ran
     double velocity_residual = 0.0;  ///< the last velocity pass's largest change, m/s
     double position_residual = 0.0;  ///< the last position pass's largest change, m/s
@@ -107,8 +114,11 @@ public:
     /// against gravity (any direction without gravity):
     ///  1. prepare each contact (masses, bounce and bias), warm start from the last step;
     ///  2. up to velocity_iterations passes over all contacts, until nothing approaches;
-    ///     the change of velocity also moves each body over this step (as if the solve had
-    ///     come before the move), and each point's depth is estimated after that move;
+    ///     with a friction pass (chapter 6) first without bounce, friction included, then
+    ///     up to as many passes again along the normals alone for the bounce (Newton's
+    ///     restitution solved together with friction can create energy); the change of
+    ///     velocity also moves each body over this step (as if the solve had come before the
+    ///     move), and each point's depth is estimated after that move;
     ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
     ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
     ContactSolverReport solve(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
@@ -143,6 +153,7 @@ private:
     std::vector<double> height_;        ///< each contact's height along `up`, for the order  ///< the contacts with each point's depth after the velocity solve's move
     std::vector<Remembered> previous_;
     std::vector<Remembered> current_;
+    std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
     std::vector<Vector3> saved_velocity_;
     std::vector<Vector3> saved_angular_velocity_;
 };
