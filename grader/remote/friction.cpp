@@ -14,10 +14,8 @@ double tangent_mass(const RigidBody& body1, const RigidBody& body2, const Vector
     return Remote::call<&tangent_mass>(body1, body2, point, tangent);
 }
 std::array<double, 2> accumulate_friction(std::array<double, 2>& accumulated, const std::array<double, 2>& increment,
-                                          double normal_impulse, double static_coefficient,
-                                          double dynamic_coefficient) {
-    return Remote::call<&accumulate_friction>(accumulated, increment, normal_impulse, static_coefficient,
-                                              dynamic_coefficient);
+                                          double normal_impulse, double static_coefficient, double dynamic_coefficient) {
+    return Remote::call<&accumulate_friction>(accumulated, increment, normal_impulse, static_coefficient, dynamic_coefficient);
 }
 double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
     return Remote::call<&solve_friction>(body1, body2, contact, impulses);

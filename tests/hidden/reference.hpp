@@ -4,7 +4,10 @@
 // domain-wide samples: the checker computes the right answer to every sampled input itself,
 // from its own copy of that input. A signature that drifts from the chapter header is an
 // undefined reference when the test binaries link.
+#include <array>
+
 #include "workbook/contact.hpp"
+#include "workbook/contact_solver.hpp"
 #include "workbook/matrix3.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
@@ -35,3 +38,12 @@ double impulse_magnitude(const RigidBody& body1, const RigidBody& body2, const V
 void apply_impulse(RigidBody& body1, RigidBody& body2, const Vector3& point, const Vector3& impulse);
 void resolve(RigidBody& body1, RigidBody& body2, const Contact& contact);
 }  // namespace workbook::reference_angular_impulse
+
+namespace workbook::reference_friction {
+double mix_coefficients(double mu1, double mu2);
+std::array<Vector3, 2> tangent_basis(const Vector3& normal);
+double tangent_mass(const RigidBody& body1, const RigidBody& body2, const Vector3& point, const Vector3& tangent);
+std::array<double, 2> accumulate_friction(std::array<double, 2>& accumulated, const std::array<double, 2>& increment,
+                                          double normal_impulse, double static_coefficient, double dynamic_coefficient);
+double solve_friction(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
+}  // namespace workbook::reference_friction

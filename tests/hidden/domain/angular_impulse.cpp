@@ -18,18 +18,6 @@ namespace reference = workbook::reference_angular_impulse;
 
 namespace {
 
-/// The size of a body, m (its inertia is about m size^2).
-double body_size(const RigidBody& b) {
-    if (b.is_immovable()) return 1.0;
-    return std::sqrt((b.inertia_body(0, 0) + b.inertia_body(1, 1) + b.inertia_body(2, 2)) * b.inverse_mass);
-}
-
-/// How far rounding in I^-1 can reach: cond(I) ||I^-1||, 0 for an immovable body.
-double inverse_reach(const RigidBody& b) {
-    if (b.is_immovable()) return 0.0;
-    return condition(b.inertia_body) * frobenius(inverse(b.inertia_body));
-}
-
 /// A spinning body: movable with inverse mass `w`, or pinned (at rest or kinematic, its
 /// inertia_body zero or not); velocity and angular velocity drawn over their domain.
 RigidBody draw_body(SeededRandom& random, double w, bool immovable) {
@@ -74,21 +62,9 @@ void draw_pair(SeededRandom& random, Case& c, int pinned) {
     c.contact.add_point(c.point, depth);
 }
 
-double draw_restitution(SeededRandom& random) {
-    const double pick = random.uniform(0.0, 1.0);
-    if (pick < 0.15) return 0.0;
-    if (pick < 0.3) return 1.0;
-    return random.uniform(0.0, 1.0);
-}
-
 /// u at `point` along `normal`, from the checker's copy.
 double point_normal_velocity(const Case& c, const Vector3& point, const Vector3& normal) {
     return dot(reference::point_velocity(c.body1, point) - reference::point_velocity(c.body2, point), normal);
-}
-
-/// The sum of the magnitudes of the terms of a point velocity v + w x (p - x).
-double point_speed_terms(const RigidBody& b, const Vector3& point) {
-    return length(b.velocity) + length(b.angular_velocity) * (length(point - b.position) + length(point) + length(b.position));
 }
 
 /// The rounding of impulse_denominator: the terms (w1 + w2) |n|^2 and |I^-1| |r|^2 |n|^2, the

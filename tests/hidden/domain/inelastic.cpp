@@ -17,49 +17,6 @@ namespace reference = workbook::reference_inelastic;
 
 namespace {
 
-/// A pair with `pinned` immovable bodies (1: either side) moving as `how` says.
-bool draw_pair(SeededRandom& random, Case& c, int pinned, Approach how) {
-    double w1 = 1.0;
-    double w2 = 1.0;
-    pair_masses(random, w1, w2);
-    c.body1 = movable(random, w1);
-    c.body2 = movable(random, w2);
-    c.contact.normal = unit_normal(random);
-    const bool first = chance(random, 0.5);
-    if (pinned >= 1) pin(random, first ? c.body1 : c.body2, 0.5, false);
-    if (pinned == 2) pin(random, first ? c.body2 : c.body1, 0.5, false);
-    if (!set_motion(random, c, how)) return false;
-    place_pair(random, c);
-    // Spinning bodies: the angular velocity is not this chapter's, and must come back as it was.
-    for (RigidBody* b : {&c.body1, &c.body2}) {
-        const bool spins = chance(random, 0.5);
-        if (spins) b->angular_velocity = velocity(random);
-    }
-    return true;
-}
-
-Approach any_motion(SeededRandom& random) {
-    const double pick = random.uniform(0.0, 1.0);
-    if (pick < 0.4) return Approach::approaching;
-    if (pick < 0.55) return Approach::creeping;
-    if (pick < 0.7) return Approach::separating;
-    if (pick < 0.8) return Approach::sliding;
-    if (pick < 0.9) return Approach::equal;
-    return Approach::resting;
-}
-
-Approach not_approaching(SeededRandom& random) {
-    const double pick = random.uniform(0.0, 1.0);
-    if (pick < 0.5) return Approach::separating;
-    if (pick < 0.7) return Approach::sliding;
-    if (pick < 0.9) return Approach::equal;
-    return Approach::resting;
-}
-
-double speeds(const Case& c) { return length(c.body1.velocity) + length(c.body2.velocity); }
-
-int pinned(const Case& c) { return int(c.body1.is_immovable()) + int(c.body2.is_immovable()); }
-
 /// resolve() on copies, judged against the reference's velocities and the unchanged fields.
 Verdict judge_resolve(const Case& c, const Law& law) {
     RigidBody a1 = c.body1;
@@ -93,7 +50,7 @@ TEST_CASE("sampled pairs over the whole domain: the common velocity", "[inelasti
         [](SeededRandom& random, Case& c) {
             const int count = immovable_count(random, 0.2, 0.05);
             const Approach how = any_motion(random);
-            return draw_pair(random, c, count, how);
+            return draw_pair_moving(random, c, count, how);
         },
         [](const Case& c) -> Verdict {
             const Vector3 actual = inelastic::common_velocity(c.body1, c.body2);
@@ -111,7 +68,7 @@ TEST_CASE("sampled approaching pairs of two movable bodies stick together", "[in
         102, {.contact = true},
         [](SeededRandom& random, Case& c) {
             const Approach how = chance(random, 0.8) ? Approach::approaching : Approach::creeping;
-            return draw_pair(random, c, 0, how);
+            return draw_pair_moving(random, c, 0, how);
         },
         [](const Case& c) { return judge_resolve(c, laws::stick); },
         [](const Case& c) { return pinned(c) == 0 && normal_velocity(c) < 0.0; });
@@ -124,7 +81,7 @@ TEST_CASE("sampled pairs with one or two immovable bodies, at rest or kinematic"
         [](SeededRandom& random, Case& c) {
             const int count = chance(random, 0.85) ? 1 : 2;
             const Approach how = count == 2 ? any_motion(random) : chance(random, 0.8) ? Approach::approaching : Approach::creeping;
-            return draw_pair(random, c, count, how);
+            return draw_pair_moving(random, c, count, how);
         },
         [](const Case& c) { return judge_resolve(c, laws::immovable); },
         [](const Case& c) { return pinned(c) == 2 || (pinned(c) == 1 && normal_velocity(c) < 0.0); });
@@ -137,7 +94,7 @@ TEST_CASE("sampled pairs that do not approach: moving apart, sliding, equal velo
         [](SeededRandom& random, Case& c) {
             const int count = chance(random, 0.3) ? 1 : 0;
             const Approach how = not_approaching(random);
-            return draw_pair(random, c, count, how);
+            return draw_pair_moving(random, c, count, how);
         },
         [](const Case& c) { return judge_resolve(c, laws::separating); },
         [](const Case& c) { return pinned(c) < 2 && normal_velocity(c) >= 0.0; });
@@ -160,7 +117,7 @@ TEST_CASE("sampled pairs over the whole domain: the energy lost", "[inelastic][s
         [](SeededRandom& random, Case& c) {
             const int count = immovable_count(random, 0.2, 0.05);
             const Approach how = any_motion(random);
-            return draw_pair(random, c, count, how);
+            return draw_pair_moving(random, c, count, how);
         },
         [](const Case& c) -> Verdict {
             const double actual = inelastic::energy_lost(c.body1, c.body2);

@@ -78,8 +78,6 @@ bool draw_pair(SeededRandom& random, Case& c, int pinned) {
     return true;
 }
 
-int pinned(const Case& c) { return int(c.body1.is_immovable()) + int(c.body2.is_immovable()); }
-
 bool plain_knobs(const Case& c) { return c.knobs.fraction == 1.0 && c.knobs.slop == 0.0; }
 
 /// correct() on copies, judged against the reference's positions.

@@ -17,6 +17,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -25,6 +26,7 @@
 #include "feedback.hpp"
 #include "seeded_random.hpp"
 #include "workbook/contact.hpp"
+#include "workbook/contact_solver.hpp"
 #include "workbook/matrix3.hpp"
 #include "workbook/quaternion.hpp"
 #include "workbook/response_model.hpp"
@@ -48,6 +50,16 @@ struct Case {
     Vector3 impulse{};        ///< an impulse argument (chapter 4)
     double restitution = 1.0; ///< a restitution argument
     double depth = 0.0;       ///< a depth argument (chapter 2)
+    // Chapter 6's arguments.
+    ContactImpulses impulses{};           ///< the solver's impulses of `contact`'s points
+    Vector3 tangent{};                    ///< a tangent argument
+    double mu1 = 0.0;                     ///< the two coefficients mix_coefficients() mixes
+    double mu2 = 0.0;
+    std::array<double, 2> accumulated{};  ///< accumulate_friction()'s accumulated pair
+    std::array<double, 2> increment{};    ///< and its increment
+    double normal_impulse = 0.0;          ///< and its normal impulse and coefficients
+    double static_coefficient = 0.0;
+    double dynamic_coefficient = 0.0;
 };
 
 /// A field of `after` that differs from `before`, in words, with its two values; empty when none.
@@ -84,6 +96,9 @@ inline Change first_change(const RigidBody& before, const RigidBody& after, MayC
     };
     if (!same(before.inverse_mass, after.inverse_mass)) return {who + ".inverse_mass", before.inverse_mass, after.inverse_mass};
     if (!same(before.restitution, after.restitution)) return {who + ".restitution", before.restitution, after.restitution};
+    if (!same(before.friction, after.friction)) return {who + ".friction", before.friction, after.friction};
+    if (!same(before.static_friction, after.static_friction))
+        return {who + ".static_friction", before.static_friction, after.static_friction};
     if (Change c = matrix("inertia_body", before.inertia_body, after.inertia_body); !c.field.empty()) return c;
     if (Change c = matrix("inverse_inertia_world", before.inverse_inertia_world, after.inverse_inertia_world); !c.field.empty())
         return c;
@@ -181,6 +196,23 @@ inline double frobenius(const Matrix3& a) {
 
 /// How much rounding an inverse of `inertia` amplifies: ||I|| ||I^-1|| (Frobenius), >= 3.
 inline double condition(const Matrix3& inertia) { return frobenius(inertia) * frobenius(inverse(inertia)); }
+
+/// The size of a body, m (its inertia is about m size^2).
+inline double body_size(const RigidBody& b) {
+    if (b.is_immovable()) return 1.0;
+    return std::sqrt((b.inertia_body(0, 0) + b.inertia_body(1, 1) + b.inertia_body(2, 2)) * b.inverse_mass);
+}
+
+/// How far rounding in I^-1 can reach: cond(I) ||I^-1||, 0 for an immovable body.
+inline double inverse_reach(const RigidBody& b) {
+    if (b.is_immovable()) return 0.0;
+    return condition(b.inertia_body) * frobenius(inverse(b.inertia_body));
+}
+
+/// The sum of the magnitudes of the terms of a point velocity v + w x (p - x).
+inline double point_speed_terms(const RigidBody& b, const Vector3& point) {
+    return length(b.velocity) + length(b.angular_velocity) * (length(point - b.position) + length(point) + length(b.position));
+}
 
 // ----- Drawing ------------------------------------------------------------------------------
 
@@ -469,6 +501,65 @@ inline void place_pair(SeededRandom& random, Case& c) {
     c.contact.add_point(point, overlap);
 }
 
+/// A pair of spheres along the contact normal for the chapters without spin (1 and 3): masses
+/// with the pair edges (pair_masses()), `pinned` immovable bodies (1: either side, at rest or
+/// kinematic), moving along the normal as `how` says (set_motion()), placed by place_pair(),
+/// and each spinning with probability 0.5 (the angular velocity is not those chapters', and
+/// must come back as it was). False when the motion could not be drawn.
+inline bool draw_pair_moving(SeededRandom& random, Case& c, int pinned, Approach how) {
+    double w1 = 1.0;
+    double w2 = 1.0;
+    pair_masses(random, w1, w2);
+    c.body1 = movable(random, w1);
+    c.body2 = movable(random, w2);
+    c.contact.normal = unit_normal(random);
+    const bool first = chance(random, 0.5);
+    if (pinned >= 1) pin(random, first ? c.body1 : c.body2, 0.5, false);
+    if (pinned == 2) pin(random, first ? c.body2 : c.body1, 0.5, false);
+    if (!set_motion(random, c, how)) return false;
+    place_pair(random, c);
+    for (RigidBody* b : {&c.body1, &c.body2}) {
+        const bool spins = chance(random, 0.5);
+        if (spins) b->angular_velocity = velocity(random);
+    }
+    return true;
+}
+
+/// Any motion along the normal: approaching 0.4, creeping 0.15, separating 0.15, sliding 0.1,
+/// equal velocities 0.1, resting 0.1.
+inline Approach any_motion(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.4) return Approach::approaching;
+    if (pick < 0.55) return Approach::creeping;
+    if (pick < 0.7) return Approach::separating;
+    if (pick < 0.8) return Approach::sliding;
+    if (pick < 0.9) return Approach::equal;
+    return Approach::resting;
+}
+
+/// A motion that does not approach: separating 0.5, sliding 0.2, equal velocities 0.2, resting 0.1.
+inline Approach not_approaching(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.5) return Approach::separating;
+    if (pick < 0.7) return Approach::sliding;
+    if (pick < 0.9) return Approach::equal;
+    return Approach::resting;
+}
+
+/// A restitution argument (chapters 3 and 4): 0 and 1 on purpose, else uniform.
+inline double draw_restitution(SeededRandom& random) {
+    const double pick = random.uniform(0.0, 1.0);
+    if (pick < 0.15) return 0.0;
+    if (pick < 0.3) return 1.0;
+    return random.uniform(0.0, 1.0);
+}
+
+/// |v1| + |v2|: the scale of a velocity answer of the chapters without spin.
+inline double speeds(const Case& c) { return length(c.body1.velocity) + length(c.body2.velocity); }
+
+/// How many bodies of the case are immovable.
+inline int pinned(const Case& c) { return int(c.body1.is_immovable()) + int(c.body2.is_immovable()); }
+
 // ----- Reducing a failing case --------------------------------------------------------------
 
 /// Simpler values than x, simplest first: 0, +-1, its power of ten, x to 1 and 3 digits.
@@ -517,6 +608,19 @@ inline std::vector<double*> numbers(Case& c) {
     vec(c.impulse);
     out.push_back(&c.restitution);
     out.push_back(&c.depth);
+    // Chapter 6's (all 0 in the other chapters' cases, so nothing to simplify there).
+    for (RigidBody* b : {&c.body1, &c.body2}) {
+        out.push_back(&b->friction);
+        out.push_back(&b->static_friction);
+    }
+    for (std::size_t i = 0; i < c.contact.point_count; ++i) {
+        out.push_back(&c.impulses.points[i].normal);
+        out.push_back(&c.impulses.points[i].friction[0]);
+        out.push_back(&c.impulses.points[i].friction[1]);
+    }
+    for (double* x : {&c.mu1, &c.mu2, &c.accumulated[0], &c.accumulated[1], &c.increment[0], &c.increment[1], &c.normal_impulse,
+                      &c.static_coefficient, &c.dynamic_coefficient})
+        out.push_back(x);
     return out;
 }
 
@@ -540,8 +644,12 @@ inline std::vector<Case> simpler_cases(const Case& c) {
     for (std::size_t drop = 0; c.contact.point_count > 1 && drop < c.contact.point_count; ++drop) {
         Case k = c;
         k.contact.point_count = 0;
+        k.impulses = ContactImpulses{};
         for (std::size_t i = 0; i < c.contact.point_count; ++i)
-            if (i != drop) k.contact.points[k.contact.point_count++] = c.contact.points[i];
+            if (i != drop) {
+                k.impulses.points[k.contact.point_count] = c.impulses.points[i];
+                k.contact.points[k.contact.point_count++] = c.contact.points[i];
+            }
         out.push_back(k);
     }
     for (int side = 0; side < 2; ++side) {
@@ -602,6 +710,7 @@ inline std::vector<Case> simpler_cases(const Case& c) {
 inline bool legal(const Case& c) {
     for (const RigidBody* b : {&c.body1, &c.body2}) {
         if (!(b->inverse_mass >= 0.0) || !(b->restitution >= 0.0 && b->restitution <= 1.0)) return false;
+        if (!(b->friction >= 0.0 && b->static_friction >= b->friction)) return false;
         if (!b->is_immovable()) {
             const Matrix3& i = b->inertia_body;
             const double d1 = i(0, 0);
@@ -615,6 +724,10 @@ inline bool legal(const Case& c) {
         if (!(d >= 0.0) || d > c.contact.penetration) return false;
     }
     if (std::abs(length(c.contact.normal) - 1.0) > 1e-15) return false;
+    for (std::size_t i = 0; i < c.contact.point_count; ++i)
+        if (!(c.impulses.points[i].normal >= 0.0)) return false;
+    if (!(c.mu1 >= 0.0 && c.mu2 >= 0.0 && c.normal_impulse >= 0.0)) return false;
+    if (!(c.dynamic_coefficient >= 0.0 && c.static_coefficient >= c.dynamic_coefficient)) return false;
     return c.knobs.fraction >= 0.0 && c.knobs.slop >= 0.0 && c.depth >= 0.0 && c.restitution >= 0.0 && c.restitution <= 1.0;
 }
 
@@ -627,6 +740,8 @@ inline std::string body_text(const RigidBody& b, bool spin) {
     if (!(b.angular_velocity == Vector3{})) s += ", w = " + format(b.angular_velocity) + " rad/s";
     s += ", at " + format(b.position) + " m";
     if (b.restitution != 1.0) s += ", e = " + format(b.restitution);
+    if (b.friction != 0.0 || b.static_friction != 0.0)
+        s += ", friction " + format(b.friction) + " (static " + format(b.static_friction) + ")";
     if (!spin) return s;
     const Quaternion& q = b.orientation;
     if (q.w != 1.0 || q.x != 0.0 || q.y != 0.0 || q.z != 0.0)
@@ -651,6 +766,7 @@ inline std::string contact_text(const Contact& c) {
 
 /// What a judge reads of a case, for the feedback: it prints only those parts.
 struct Reads {
+    bool body1 = true;  ///< false for a function that takes no body (chapter 6's steps 1, 2 and 4)
     bool body2 = true;
     bool contact = false;
     bool knobs = false;
@@ -660,11 +776,15 @@ struct Reads {
     bool restitution = false;
     bool depth = false;
     bool spin = false;  ///< orientation and inertia (chapter 4)
+    bool impulses = false;     ///< the points' accumulated normal and friction impulses (chapter 6)
+    bool tangent = false;      ///< a tangent argument (chapter 6)
+    bool mix = false;          ///< mix_coefficients()'s two coefficients (chapter 6)
+    bool accumulate = false;   ///< accumulate_friction()'s arguments (chapter 6)
 };
 
 inline std::string case_text(const Case& c, Reads reads) {
     using testing::format;
-    std::string s = "body 1: " + body_text(c.body1, reads.spin);
+    std::string s = reads.body1 ? "body 1: " + body_text(c.body1, reads.spin) : std::string();
     if (reads.body2) s += "; body 2: " + body_text(c.body2, reads.spin);
     if (reads.contact) s += "; contact: " + contact_text(c.contact);
     if (reads.knobs) s += "; knobs: fraction " + format(c.knobs.fraction) + ", slop " + format(c.knobs.slop) + " m";
@@ -673,7 +793,19 @@ inline std::string case_text(const Case& c, Reads reads) {
     if (reads.impulse) s += "; impulse " + format(c.impulse) + " kg m/s";
     if (reads.restitution) s += "; e = " + format(c.restitution);
     if (reads.depth) s += "; depth " + format(c.depth) + " m";
-    return s;
+    if (reads.impulses)
+        for (std::size_t i = 0; i < c.contact.point_count; ++i) {
+            const PointImpulse& p = c.impulses.points[i];
+            s += "; point " + std::to_string(i + 1) + "'s accumulated normal impulse " + format(p.normal) + " kg m/s, friction (" +
+                 format(p.friction[0]) + ", " + format(p.friction[1]) + "), normal effective mass " + format(p.mass) + " kg";
+        }
+    if (reads.tangent) s += "; tangent " + format(c.tangent);
+    if (reads.mix) s += "; mu1 = " + format(c.mu1) + ", mu2 = " + format(c.mu2);
+    if (reads.accumulate)
+        s += "; accumulated (" + format(c.accumulated[0]) + ", " + format(c.accumulated[1]) + ") kg m/s, increment (" +
+             format(c.increment[0]) + ", " + format(c.increment[1]) + "), normal impulse " + format(c.normal_impulse) +
+             " kg m/s, mu_s = " + format(c.static_coefficient) + ", mu_d = " + format(c.dynamic_coefficient);
+    return s.starts_with("; ") ? s.substr(2) : s;
 }
 
 // ----- The sampling loop --------------------------------------------------------------------
