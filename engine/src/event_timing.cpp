@@ -342,14 +342,6 @@ public:
             s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs);
-        // A kinematic plane that moves or turns can meet any body: each is its candidate.
-        for (std::uint32_t i = 0; i < count_; ++i) {
-            const RigidBody& body = bodies_[i];
-            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
-                continue;
-            for (std::uint32_t j = 0; j < count_; ++j)
-                if (j != i) add_extra(i, j);
-        }
         // Each body's candidates, as lists by body (a counting sort of the pairs).
         s.start.assign(count_ + 1, 0);
         for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
@@ -361,6 +353,14 @@ public:
         }
         for (std::uint32_t i = count_; i > 0; --i) s.start[i] = s.start[i - 1];
         s.start[0] = 0;
+        // A kinematic plane that moves or turns can meet any body: each is its candidate.
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
+            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
+                continue;
+            for (std::uint32_t j = 0; j < count_; ++j)
+                if (j != i) add_candidate(j, i);
+        }
         for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
         for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
     }
@@ -398,14 +398,14 @@ public:
     std::span<const BodyPair> pairs_to_check() {
         EventScratch& s = scratch_;
         if (s.extra.empty()) return s.pairs;
-        s.all_pairs.assign(s.pairs.begin(), s.pairs.end());
-        s.all_pairs.insert(s.all_pairs.end(), s.extra.begin(), s.extra.end());
+        // The broad phase's pairs are sorted already and no extra repeats one of them
+        // (add_candidate()): only the extras are sorted, then the two lists merged.
         const auto order = [](const BodyPair& a, const BodyPair& b) {
             return a.first != b.first ? a.first < b.first : a.second < b.second;
         };
-        std::sort(s.all_pairs.begin(), s.all_pairs.end(), order);
-        const auto same = [](const BodyPair& a, const BodyPair& b) { return a.first == b.first && a.second == b.second; };
-        s.all_pairs.erase(std::unique(s.all_pairs.begin(), s.all_pairs.end(), same), s.all_pairs.end());
+        std::sort(s.extra.begin(), s.extra.end(), order);
+        s.all_pairs.resize(s.pairs.size() + s.extra.size());
+        std::merge(s.pairs.begin(), s.pairs.end(), s.extra.begin(), s.extra.end(), s.all_pairs.begin(), order);
         return s.all_pairs;
     }
 
@@ -418,6 +418,23 @@ private:
     [[nodiscard]] double can_move(const RigidBody& body, double left) const {
         const double speed_part = length(body.velocity) * left;
         return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+    }
+
+    /// True when body b is among body a's candidates already (its lists are short: the
+    /// bodies next to it).
+    [[nodiscard]] bool is_candidate(std::uint32_t a, std::uint32_t b) const {
+        const EventScratch& s = scratch_;
+        for (std::uint32_t n = s.start[a]; n < s.start[a + 1]; ++n)
+            if (s.partners[n] == b) return true;
+        for (std::uint32_t n = s.extra_head[a]; n != no_extra; n = s.extra_nodes[n].next)
+            if (s.extra_nodes[n].partner == b) return true;
+        return false;
+    }
+
+    /// Makes bodies a and b candidates, found after the broad phase, unless they are already:
+    /// a pair listed twice would be predicted twice at every event of its bodies.
+    void add_candidate(std::uint32_t a, std::uint32_t b) {
+        if (!is_candidate(a, b)) add_extra(a, b);
     }
 
     /// Records bodies a and b as candidates found after the broad phase.
@@ -467,17 +484,24 @@ private:
         return !bodies_[i].is_immovable() && needs_reach(i, t) > scratch_.reach[i];
     }
 
+    /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
+    /// the step, comes within `radius` of i's centre then.
+    void add_near(std::uint32_t i, double radius) {
+        EventScratch& s = scratch_;
+        const GridProxy& p = s.proxies.proxies[i];
+        s.near.clear();
+        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, radius, s.near);
+        for (const std::uint32_t j : s.near)
+            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_candidate(i, j);
+    }
+
     /// Widens body i's reach to what it now needs, twice over (so that a body sped up again
     /// and again is searched a few times, not at every event), and adds as candidates the
     /// bodies whose widened spheres its new one meets, from the cells near it.
     void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
         s.reach[i] = 2.0 * needs_reach(i, t);
-        const GridProxy& p = s.proxies.proxies[i];
-        s.near.clear();
-        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, bounding_radius(bodies_[i]) + s.reach[i], s.near);
-        for (const std::uint32_t j : s.near)
-            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_extra(i, j);
+        add_near(i, bounding_radius(bodies_[i]) + s.reach[i]);
     }
 
     std::span<RigidBody> bodies_;
