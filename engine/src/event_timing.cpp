@@ -13,7 +13,9 @@
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
 #include "workbook/shape_pairs.hpp"
-#include "workbook/world.hpp"
+#include "workbook/guards.hpp"
+#include "workbook/response_model.hpp"
+#include "workbook/world.hpp"  // Integrator
 
 namespace workbook {
 
@@ -315,12 +317,12 @@ bool later(const ImpactEvent& a, const ImpactEvent& b) {
     return a.j > b.j;
 }
 
-/// The event loop of one step over `bodies`; see step_with_event_timing().
+/// The event loop of one step over `bodies`; see move_impact_to_impact().
 class EventLoop {
 public:
-    EventLoop(std::span<RigidBody> bodies, const WorldSettings& settings, EventScratch& scratch)
-        : bodies_(bodies), scratch_(scratch), gravity_(settings.gravity), k_(gravity_position_factor(settings.integrator)),
-          dt_(settings.time_step), count_(static_cast<std::uint32_t>(bodies.size())) {}
+    EventLoop(std::span<RigidBody> bodies, const EventMotion& motion, EventScratch& scratch)
+        : bodies_(bodies), scratch_(scratch), gravity_(motion.gravity), k_(motion.k), dt_(motion.dt),
+          count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
@@ -512,66 +514,51 @@ private:
     std::uint32_t count_;
 };
 
+/// Moves the two bodies of `event` to its moment and answers their contact there with the
+/// model's responder; returns the kinetic energy the response changed.
+double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, EventLoop& loop, const ResponseModel& model,
+                     const FiniteCheck& check, EventScratch& scratch) {
+    std::uint32_t first = event.i, second = event.j;
+    loop.advance_to(first, event.t);
+    loop.advance_to(second, event.t);
+    // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
+    if (bodies[first].shape.kind == ShapeKind::plane ||
+        (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
+        std::swap(first, second);
+    const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
+    const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+    model.respond(bodies[first], bodies[second], contact);
+    const double change = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+    scratch.contacts.push_back(contact);
+    if (check.on && !(poison(bodies[first]) + poison(bodies[second]) == 0.0))
+        check_finite(bodies, check.names, check.step, "event: respond");
+    loop.changed(first, event.t);
+    loop.changed(second, event.t);
+    return change;
+}
+
 }  // namespace
 
-void World::step_with_event_timing() {
-    World& world = *this;
-    const WorldSettings& settings = world.settings_;
-    std::span<RigidBody> bodies = world.bodies_;
-    EventScratch& scratch = world.event_scratch_;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    const ResponseModel& model = world.model_;
+void advance_whole_step(std::span<RigidBody> bodies, const EventMotion& motion) {
+    for (RigidBody& body : bodies) advance(body, motion.gravity, motion.k, motion.dt);
+}
 
-    // Without a responder nothing changes at an impact: the bodies pass as the discrete loop
-    // would, so there are no events to follow.
-    double energy_change = 0.0;
-    EventLoop loop(bodies, settings, scratch);
-    if (model.respond == nullptr) {
-        scratch.since.assign(count, 0.0);
-        for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
-        world.guard("event: advance");
-        world.find_contacts(false);
-        if (!(world.correct_contacts() == 0.0)) world.guard("correct");
-        world.response_energy_change_ = 0.0;
-        return;
-    }
+ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMotion& motion, const ResponseModel& model,
+                                      const FiniteCheck& check, EventScratch& scratch) {
+    const auto count = static_cast<std::uint32_t>(bodies.size());
+    EventLoop loop(bodies, motion, scratch);
     loop.start();
+    double energy_change = 0.0;
     const std::size_t event_budget = 8 + 2 * std::size_t{count};
     for (std::size_t events = 0; events < event_budget; ++events) {
         const std::optional<ImpactEvent> event = loop.next();
         if (!event) break;
-        std::uint32_t first = event->i, second = event->j;
-        loop.advance_to(first, event->t);
-        loop.advance_to(second, event->t);
-        // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
-        if (bodies[first].shape.kind == ShapeKind::plane ||
-            (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
-            std::swap(first, second);
-        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-        const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
-        model.respond(bodies[first], bodies[second], contact);
-        energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
-        scratch.contacts.push_back(contact);
-        const std::uint32_t changed[] = {first, second};
-        world.guard_bodies("event: respond", changed);
-        loop.changed(first, event->t);
-        loop.changed(second, event->t);
+        energy_change += answer_impact(bodies, *event, loop, model, check, scratch);
     }
     // Every body to the end of the step, each from the time its state refers to.
-    for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
-    world.guard("event: advance");
-
-    // The discrete back-stop: whatever still overlaps beyond rounding (deep initial overlaps,
-    // resting contacts, pairs left out of the event loop), in index order as detect() would
-    // find them, among the candidates, then the world's own response and correction.
-    world.contacts_.clear();
-    world.used_broad_phase_ = scratch.broad_phase.has_grid();
-    for (const auto [i, j] : loop.pairs_to_check()) world.add_contact_if_any(i, j);
-    if (!(world.respond_contacts() == 0.0)) world.guard("respond");
-    if (!(world.correct_contacts() == 0.0)) world.guard("correct");
-    world.response_energy_change_ += energy_change;
-    // The contacts answered at their moment come first, in the order they were answered.
-    world.contacts_.insert(world.contacts_.begin(), scratch.contacts.begin(), scratch.contacts.end());
+    for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, motion.dt);
+    if (check.on) check_finite(bodies, check.names, check.step, "event: advance");
+    return {energy_change, loop.pairs_to_check(), scratch.broad_phase.has_grid()};
 }
 
 }  // namespace workbook
