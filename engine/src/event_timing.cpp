@@ -158,21 +158,37 @@ void advance(RigidBody& body, const Vector3& gravity, double k, double tau) {
     if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
 }
 
-/// The body as time_of_impact() must see it `s` after the time its state refers to: at its
-/// position then, with the velocity that makes x + v tau + k g tau^2 continue the same curve
-/// (v + 2 k g s; the body's own velocity then is v + g s, equal only for k = 1/2). A body is
-/// advanced in one piece from its state to its next event, so predictions must follow that piece.
-RigidBody seen_after(const RigidBody& body, const Vector3& gravity, double k, double s) {
-    RigidBody seen = body;
-    if (s <= 0.0) return seen;
-    if (body.is_immovable()) {
-        seen.position += body.velocity * s;
-        return seen;
+/// Shows `body` to time_of_impact() as it must see it `s` after the time its state refers to,
+/// for as long as this lives: at its position then, with the velocity that makes
+/// x + v tau + k g tau^2 continue the same curve (v + 2 k g s; the body's own velocity then is
+/// v + g s, equal only for k = 1/2). A body is advanced in one piece from its state to its next
+/// event, so predictions must follow that piece. The two vectors are changed in place and put
+/// back afterwards: a copy of the whole body (328 bytes) at most predictions of a pile cost more
+/// than the time of impact itself.
+class SeenAfter {
+public:
+    SeenAfter(RigidBody& body, const Vector3& gravity, double k, double s)
+        : body_(body), position_(body.position), velocity_(body.velocity) {
+        if (s <= 0.0) return;
+        if (body.is_immovable()) {
+            body.position += velocity_ * s;
+            return;
+        }
+        body.position += velocity_ * s + gravity * (k * s * s);
+        body.velocity += gravity * (2.0 * k * s);
     }
-    seen.position += body.velocity * s + gravity * (k * s * s);
-    seen.velocity += gravity * (2.0 * k * s);
-    return seen;
-}
+    ~SeenAfter() {
+        body_.position = position_;
+        body_.velocity = velocity_;
+    }
+    SeenAfter(const SeenAfter&) = delete;
+    SeenAfter& operator=(const SeenAfter&) = delete;
+
+private:
+    RigidBody& body_;
+    Vector3 position_;
+    Vector3 velocity_;
+};
 
 /// A sphere against a box that does not spin. The sphere's centre moves relative to the box
 /// along d + u tau + a tau^2, and the gap is its distance from the box less the radius, which
@@ -343,7 +359,7 @@ public:
             s.reach[i] = can_move(bodies_[i], dt_);
             s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
-        s.broad_phase.find_pairs(s.proxies, s.pairs);
+        s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
         // Each body's candidates, as lists by body (a counting sort of the pairs).
         s.start.assign(count_ + 1, 0);
         for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
@@ -395,19 +411,19 @@ public:
         for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
     }
 
-    /// Every pair that may overlap at the end of the step, each once, sorted by (first, second):
-    /// the candidates, which hold every pair whose bodies came near each other.
-    std::span<const BodyPair> pairs_to_check() {
+    /// Every candidate pair that overlaps at the end of the step, each once, sorted by (first,
+    /// second) as detect() would find them: the candidates hold every pair whose bodies came
+    /// near each other. Only these few are sorted, not the candidates.
+    std::span<const BodyPair> overlapping_pairs() {
         EventScratch& s = scratch_;
-        if (s.extra.empty()) return s.pairs;
-        // The broad phase's pairs are sorted already and no extra repeats one of them
-        // (add_candidate()): only the extras are sorted, then the two lists merged.
+        s.all_pairs.clear();
+        for (const std::vector<BodyPair>* list : {&s.pairs, &s.extra})
+            for (const BodyPair& p : *list)
+                if (overlaps(bodies_[p.first], bodies_[p.second])) s.all_pairs.push_back(p);
         const auto order = [](const BodyPair& a, const BodyPair& b) {
             return a.first != b.first ? a.first < b.first : a.second < b.second;
         };
-        std::sort(s.extra.begin(), s.extra.end(), order);
-        s.all_pairs.resize(s.pairs.size() + s.extra.size());
-        std::merge(s.pairs.begin(), s.pairs.end(), s.extra.begin(), s.extra.end(), s.all_pairs.begin(), order);
+        std::sort(s.all_pairs.begin(), s.all_pairs.end(), order);
         return s.all_pairs;
     }
 
@@ -464,11 +480,10 @@ private:
                                   can_move(body_b, dt_ - s.since[b]);
             if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
         }
-        // Each as time_of_impact() must see it at t (a copy only for a body whose state is older).
-        const auto tau = t == s.since[a] && t == s.since[b]
-                             ? time_of_impact(body_a, body_b, gravity_, k_, dt_ - t)
-                             : time_of_impact(seen_after(body_a, gravity_, k_, t - s.since[a]),
-                                              seen_after(body_b, gravity_, k_, t - s.since[b]), gravity_, k_, dt_ - t);
+        // Each as time_of_impact() must see it at t (moved only when its state is older).
+        const SeenAfter seen_a(bodies_[a], gravity_, k_, t - s.since[a]);
+        const SeenAfter seen_b(bodies_[b], gravity_, k_, t - s.since[b]);
+        const auto tau = time_of_impact(body_a, body_b, gravity_, k_, dt_ - t);
         if (!tau) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
         s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
@@ -558,7 +573,7 @@ ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMo
     // Every body to the end of the step, each from the time its state refers to.
     for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, motion.dt);
     if (check.on) check_finite(bodies, check.names, check.step, "event: advance");
-    return {energy_change, loop.pairs_to_check(), scratch.broad_phase.has_grid()};
+    return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};
 }
 
 }  // namespace workbook

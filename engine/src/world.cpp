@@ -180,12 +180,12 @@ void World::gather_body(std::uint32_t i, bool swept, double dt, const Vector3& g
 
 void World::detect() {
     if (impacts_fresh_) {
-        // After integrate_impact_to_impact(): only pairs whose bodies came near each other
-        // can overlap, in index order as below.
+        // After integrate_impact_to_impact(), which found the overlapping pairs among those
+        // whose bodies came near each other, in index order as below.
         impacts_fresh_ = false;
         contacts_.clear();
         used_broad_phase_ = impacts_.used_grid;
-        for (const auto [i, j] : impacts_.pairs_to_check) add_contact_if_any(i, j);
+        for (const auto [i, j] : impacts_.overlapping_pairs) add_contact_if_any(i, j);
         return;
     }
     // The proxies integrate() gathered, unless the bodies may have changed since.

@@ -61,7 +61,7 @@ struct EventScratch {
     std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
     ProxySet proxies;                      ///< the bodies at the start of the step, widened by their reach
     BroadPhase broad_phase;                ///< finds the candidates once per step
-    std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap
+    std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap (in no order)
     std::vector<std::uint32_t> start;      ///< per body, into partners (a counting sort of pairs)
     std::vector<std::uint32_t> partners;   ///< each body's candidate partners, body after body
     std::vector<BodyPair> extra;           ///< candidates found later, for a body that outran its reach
@@ -74,7 +74,7 @@ struct EventScratch {
     };
     std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
-    std::vector<BodyPair> all_pairs;       ///< candidates and extras, sorted, for the back-stop
+    std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
     std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
     std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
 };
@@ -96,9 +96,10 @@ struct FiniteCheck {
 /// What move_impact_to_impact() leaves for the rest of the step.
 struct ImpactsAnswered {
     double energy_change = 0.0;            ///< kinetic energy the responses at impacts changed, J
-    /// Every pair that may overlap at the end of the step, each once, sorted by (first, second):
-    /// the pairs whose bodies came near each other (a view of the scratch, valid until the next step).
-    std::span<const BodyPair> pairs_to_check;
+    /// Every pair that overlaps at the end of the step, each once, sorted by (first, second),
+    /// found among the pairs whose bodies came near each other (a view of the scratch, valid
+    /// until the next step).
+    std::span<const BodyPair> overlapping_pairs;
     bool used_grid = false;                ///< the candidates were found with a grid
 };
 
@@ -106,7 +107,7 @@ struct ImpactsAnswered {
 /// answering each impact at its moment with the model's responder (the contacts answered are
 /// left in scratch.contacts, in order), then every body to the end of the step. What still
 /// overlaps then (deep initial overlaps, resting contacts, pairs left out of the event loop)
-/// is the discrete stages' to answer, among ImpactsAnswered::pairs_to_check. A step handles at
+/// is the discrete stages' to answer, among ImpactsAnswered::overlapping_pairs. A step handles at
 /// most a bounded number of events (two per body, and at most max_events_per_body for any one
 /// body), after which the rest of it is discrete: a ball coming to rest on the ground bounces
 /// infinitely often in a finite time, and no event loop can follow that.
