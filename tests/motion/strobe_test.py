@@ -92,8 +92,8 @@ def main():
                 k = trajectory.index_at(t)
                 where = strobe.view_at(view, pitch, scene.duration, t, count)
                 for i in motion.movable(scene):
-                    position, q, _ = trajectory.states[k][i]
-                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, q, where)])
+                    position, axes, _ = trajectory.states[k][i]
+                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, axes, where)])
                     check(box[0] < x0 and x1 < box[1] and box[2] < y0 and y1 < box[3],
                           f"{name}: body {i} at frame {k} ({x0}..{x1}, {y0}..{y1}) leaves the box {box}")
 
@@ -111,8 +111,8 @@ def main():
         view = motion.choose_view(scene, [trajectory])
         for t in (0.02, 0.05, 0.08):
             k = trajectory.index_at(t)
-            position, q, _ = trajectory.states[k][0]
-            (cx, cy), (hx, hy) = motion.box_hands(scene.bodies[0], position, q, view)[0]
+            position, axes, _ = trajectory.states[k][0]
+            (cx, cy), (hx, hy) = motion.box_hands(scene.bodies[0], position, axes, view)[0]
             turned = math.atan2(hy - cy, hx - cx)
             check(abs(turned - 5.0 * trajectory.times[k]) < 1e-9 * 5.0 * trajectory.times[k] + 1e-12,
                   f"spinning cube at t = {trajectory.times[k]} s: +x hand at {turned} rad, expected {5.0 * trajectory.times[k]}")

@@ -23,7 +23,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-TRAJECTORY_HEADER = "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz"
+TRAJECTORY_HEADER = "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,ex_x,ex_y,ex_z,ey_x,ey_y,ey_z,ez_x,ez_y,ez_z"
 CONTACTS_HEADER = "frame,t,body1,body2,point,x,y,z,nx,ny,nz,depth,impulse"
 STRIDE = 7
 
