@@ -88,6 +88,16 @@ def check_scene(sim, scene, scratch):
     check(frames == list(range(steps + 1)), f"{name}: stride 1 should record frames 0..{steps}")
     check(len(bodies) == count * (steps + 1), f"{name}: {len(bodies)} rows, expected {count * (steps + 1)}")
 
+    # The body's own axes (what the pictures draw with): unit, at right angles, right-handed
+    # (x cross y is z), to rounding, in every row.
+    for row in bodies[:: max(1, len(bodies) // 200)]:
+        ex, ey, ez = ([float(row[f"e{a}_{c}"]) for c in "xyz"] for a in "xyz")
+        cross = [ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0]]
+        dots = [sum(a * b for a, b in zip(u, v)) for u, v in ((ex, ex), (ey, ey), (ez, ez), (ex, ey), (ey, ez), (ez, ex))]
+        check(all(abs(d - (1.0 if k < 3 else 0.0)) <= 1e-12 for k, d in enumerate(dots)) and
+              all(abs(a - b) <= 1e-12 for a, b in zip(cross, ez)),
+              f"{name}: body {row['body']} at frame {row['frame']}: axes {ex}, {ey}, {ez} are not a rotation")
+
     # First frame: the scene file.
     for i, body in enumerate(spec["bodies"]):
         row = bodies[i]
