@@ -263,23 +263,33 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     Contact contact;
     contact.body1 = i1;
     contact.body2 = i2;
-    if (b1.shape.kind == ShapeKind::sphere && b2.shape.kind == ShapeKind::box) {
-        const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
-        const Vector3 offset = b1.position - nearest;
-        const double distance = length(offset);
-        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-        contact.add_point(nearest, 0.0);
-    } else if (b1.shape.kind == ShapeKind::box) {
-        contact.normal = rotate(b2.orientation, b2.shape.normal);
-        add_touching_corners(b1, b2.position, contact.normal, contact);
-    } else if (b2.shape.kind == ShapeKind::plane) {
-        contact.normal = rotate(b2.orientation, b2.shape.normal);
-        contact.add_point(b1.position - contact.normal * b1.shape.radius, 0.0);
-    } else {
-        const Vector3 offset = b1.position - b2.position;
-        const double distance = length(offset);
-        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-        contact.add_point(b2.position + contact.normal * b2.shape.radius, 0.0);
+    // Body 1 is the sphere of a pair with one, the box of a box and a plane (answer_impact()).
+    switch (pair_of(b1.shape.kind, b2.shape.kind)) {
+        case ShapePair::sphere_box: {
+            const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
+            const Vector3 offset = b1.position - nearest;
+            const double distance = length(offset);
+            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+            contact.add_point(nearest, 0.0);
+            break;
+        }
+        case ShapePair::plane_box:
+            contact.normal = rotate(b2.orientation, b2.shape.normal);
+            add_touching_corners(b1, b2.position, contact.normal, contact);
+            break;
+        case ShapePair::sphere_plane:
+            contact.normal = rotate(b2.orientation, b2.shape.normal);
+            contact.add_point(b1.position - contact.normal * b1.shape.radius, 0.0);
+            break;
+        case ShapePair::sphere_sphere: {
+            const Vector3 offset = b1.position - b2.position;
+            const double distance = length(offset);
+            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+            contact.add_point(b2.position + contact.normal * b2.shape.radius, 0.0);
+            break;
+        }
+        case ShapePair::plane_plane:
+        case ShapePair::box_box: break;  // never an impact (time_of_impact())
     }
     return contact;
 }

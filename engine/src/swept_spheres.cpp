@@ -102,6 +102,14 @@ std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const R
     return std::nullopt;
 }
 
+/// The unit vector from `from` towards `to` (a contact normal, pointing at body 1), or the
+/// fixed normal detection uses when the two points coincide.
+Vector3 away_from(const Vector3& from, const Vector3& to) {
+    const Vector3 offset = to - from;
+    const double distance = length(offset);
+    return distance > 0.0 ? offset / distance : coincident_centres_normal;
+}
+
 /// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
 /// index: what trying every body in index order finds, whatever order the candidates come in.
 struct EarliestTouch {
@@ -246,14 +254,15 @@ private:
         Contact contact;
         contact.body1 = i;
         contact.body2 = touch.partner;
-        if (other.shape.kind == ShapeKind::plane) {
-            contact.normal = rotate(other.orientation, other.shape.normal);
-        } else {
-            const Vector3 nearest = other.shape.kind == ShapeKind::box ? nearest_point_on_box(other, other_then, fast.position)
-                                                                        : other_then;
-            const Vector3 offset = fast.position - nearest;
-            const double distance = length(offset);
-            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+        switch (pair_of(fast.shape.kind, other.shape.kind)) {
+            case ShapePair::sphere_plane: contact.normal = rotate(other.orientation, other.shape.normal); break;
+            case ShapePair::sphere_box:
+                contact.normal = away_from(nearest_point_on_box(other, other_then, fast.position), fast.position);
+                break;
+            case ShapePair::sphere_sphere: contact.normal = away_from(other_then, fast.position); break;
+            case ShapePair::plane_plane:
+            case ShapePair::plane_box:
+            case ShapePair::box_box: break;  // the fast body is a sphere
         }
         contact.add_point(fast.position - contact.normal * fast.shape.radius, 0.0);
         return contact;  // the pair was not among the contacts: it did not overlap at the end

@@ -106,6 +106,10 @@ struct StageUse {
 ///
 /// A model with a contact solver (chapter 5) replaces stages 3 and 4 by one,
 /// solve_contacts(): every contact of the step solved together, velocities then overlap.
+/// Under event timing, integrate_impact_to_impact() replaces stage 1 (the bodies move from
+/// impact to impact, each answered at its moment), detect() looks only among the pairs that
+/// came near, and keep_answered_impacts() ends the step. step() calls exactly these public
+/// stages, so that bench/stages.cpp times what a step runs.
 ///
 /// Storage is sized when the world is built; after the first step no stage allocates.
 class World {
