@@ -54,6 +54,12 @@ struct ImpactEvent {
     std::uint32_t events_j;            ///< body j's event count when it was predicted
 };
 
+/// Where a sphere ends a step under event timing (radius -1 for a body that is not a sphere).
+struct SphereEnd {
+    Vector3 centre;   ///< m
+    double radius;    ///< m
+};
+
 /// What move_impact_to_impact() keeps between steps, so that a warm step allocates nothing.
 struct EventScratch {
     std::vector<double> since;             ///< per body: the time within the step its state refers to, s
@@ -74,6 +80,8 @@ struct EventScratch {
     };
     std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
+    /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
+    std::vector<SphereEnd> ends;
     std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
     std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
     std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
