@@ -65,8 +65,9 @@ double per_step(World world, int warm, int steps) {
 
 int main(int argc, char** argv) {
     // --hash: the state hash of the gas (discrete timing, as the speed bench runs it) after
-    // every step, combined, at N = 1,000 (200 steps) and 10,000 (20 steps): what a change that
-    // must not change results compares before and after.
+    // every step, combined, at N = 1,000 (200 steps) and 10,000 (20 steps), then the same under
+    // event timing for the gas and the pile: what a change that must not change results
+    // compares before and after.
     if (argc > 1 && std::string(argv[1]) == "--hash") {
         for (const auto& [n, steps] : {std::pair{1000u, 200}, std::pair{10000u, 20}}) {
             World world = gas(n, ContactTiming::discrete);
@@ -77,23 +78,40 @@ int main(int argc, char** argv) {
             }
             std::printf("gas N = %u, %d steps: %016llx\n", n, steps, static_cast<unsigned long long>(h.value()));
         }
+        // And event timing's own results, gas and pile, which a change to its speed must keep.
+        for (const bool is_gas : {true, false}) {
+            for (const auto& [n, steps] : {std::pair{1000u, 60}, std::pair{10000u, 40}}) {
+                World world = is_gas ? gas(n, ContactTiming::event) : pile(n, ContactTiming::event);
+                testing::StateHash h;
+                for (int i = 0; i < steps; ++i) {
+                    world.step();
+                    h.add(testing::state_hash(world));
+                }
+                std::printf("event timing, %s N = %u, %d steps: %016llx\n", is_gas ? "gas" : "pile", n, steps,
+                            static_cast<unsigned long long>(h.value()));
+            }
+        }
         return 0;
     }
-    std::vector<std::uint32_t> counts{1'000, 10'000, 100'000};
-    if (argc > 1) {
-        counts.clear();
-        for (int i = 1; i < argc; ++i) counts.push_back(static_cast<std::uint32_t>(std::strtoul(argv[i], nullptr, 10)));
+    // [gas|pile] N...: one scene only, at the given sizes.
+    std::vector<std::string> scenes{"gas", "pile"};
+    std::vector<std::uint32_t> counts;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "gas" || arg == "pile") scenes = {arg};
+        else counts.push_back(static_cast<std::uint32_t>(std::strtoul(argv[i], nullptr, 10)));
     }
+    if (counts.empty()) counts = {1'000, 10'000, 100'000};
     std::printf("%-6s %8s %14s %14s %7s\n", "scene", "N", "discrete ms", "event ms", "ratio");
-    for (const char* scene : {"gas", "pile"}) {
+    for (const std::string& scene : scenes) {
         for (const std::uint32_t n : counts) {
-            const bool is_gas = std::string(scene) == "gas";
+            const bool is_gas = scene == "gas";
             const int steps = n >= 100'000 ? 5 : 20;
             const int warm = is_gas ? 5 : 30;
             const auto build = [&](ContactTiming timing) { return is_gas ? gas(n, timing) : pile(n, timing); };
             const double discrete = per_step(build(ContactTiming::discrete), warm, steps);
             const double event = per_step(build(ContactTiming::event), warm, steps);
-            std::printf("%-6s %8u %14.3f %14.3f %7.2f\n", scene, n, 1e3 * discrete, 1e3 * event, event / discrete);
+            std::printf("%-6s %8u %14.3f %14.3f %7.2f\n", scene.c_str(), n, 1e3 * discrete, 1e3 * event, event / discrete);
             std::fflush(stdout);
         }
     }

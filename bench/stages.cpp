@@ -1,9 +1,13 @@
 // Google Benchmark micro benchmarks of each stage of World::step(), on the 2D gas (gas.hpp).
-//   build/dev/bench/workbook-stages [--benchmark_filter=detect]
-// Each stage is timed on its own, repeatedly on one state, which is what the stage costs
-// inside a step (a step's state changes, its size does not).
+//   build/dev/bench/workbook-stages [--benchmark_filter=stage_in_step]
+// A stage is timed inside whole steps: each iteration runs one step through the public stages
+// in the order World::step() runs them (step_by_stages()), and only the chosen stage's time is
+// counted. A stage called again and again on one state would time something else: detect()
+// on its own gathers the broad phase's proxies itself (in a step integrate() gathers them on
+// its pass) and, without this step's swept candidates, traces fast spheres against every body.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <utility>
 #include <vector>
 
@@ -41,18 +45,57 @@ World tiled_floor() {
     return world;
 }
 
-void integrate(benchmark::State& state) {
-    World world = warm_gas(state);
-    for (auto _ : state) world.integrate();
-    state.SetItemsProcessed(state.iterations() * state.range(0));
+/// The stages of World::step(), in its order.
+enum class Stage { integrate, detect, respond, correct, solve_contacts, keep_answered_impacts };
+
+/// One step of `world` through its public stages, exactly as World::step() runs them (a test in
+/// tests/engine/world.cpp holds step() to these calls), save the clock, which only step()
+/// advances; returns the seconds `timed` took.
+double step_by_stages(World& world, Stage timed) {
+    double seconds = 0.0;
+    const auto run = [&](Stage stage, auto&& call) {
+        if (stage != timed) {
+            call();
+            return;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        call();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    if (world.settings().contact_timing == workbook::ContactTiming::event) {
+        run(Stage::integrate, [&] { world.integrate_impact_to_impact(); });
+        run(Stage::detect, [&] { world.detect(); });
+        run(Stage::respond, [&] { world.respond(); });
+        run(Stage::correct, [&] { world.correct(); });
+        run(Stage::keep_answered_impacts, [&] { world.keep_answered_impacts(); });
+        return seconds;
+    }
+    run(Stage::integrate, [&] { world.integrate(); });
+    run(Stage::detect, [&] { world.detect(); });
+    if (world.model().contact_solver != nullptr) {
+        run(Stage::solve_contacts, [&] { world.solve_contacts(); });
+    } else {
+        run(Stage::respond, [&] { world.respond(); });
+        run(Stage::correct, [&] { world.correct(); });
+    }
+    return seconds;
 }
 
-void detect(benchmark::State& state) {
-    World world = warm_gas(state);
-    for (auto _ : state) {
-        world.detect();
-        benchmark::DoNotOptimize(world.contacts().data());
-    }
+/// The gas of range(0) bodies with discrete (range 1 = 0) or event timing (1), warmed up.
+World warm_gas_timed(benchmark::State& state) {
+    const World warm = warm_gas(state);
+    workbook::WorldSettings settings = warm.settings();
+    settings.contact_timing = state.range(1) == 1 ? workbook::ContactTiming::event : workbook::ContactTiming::discrete;
+    World world(std::vector<workbook::RigidBody>(warm.bodies().begin(), warm.bodies().end()), settings, warm.model());
+    for (int i = 0; i < 5; ++i) world.step();
+    return world;
+}
+
+/// One stage inside whole steps of the gas (integrate under event timing is
+/// integrate_impact_to_impact(): moving from impact to impact, each answered there).
+void stage_in_step(benchmark::State& state, Stage stage) {
+    World world = warm_gas_timed(state);
+    for (auto _ : state) state.SetIterationTime(step_by_stages(world, stage));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -61,10 +104,7 @@ void detect(benchmark::State& state) {
 void detect_grid_or_all_pairs(benchmark::State& state) {
     World world = warm_gas(state);
     world.set_shortcuts({.broad_phase = state.range(1) == 1, .broad_phase_from = 0});
-    for (auto _ : state) {
-        world.detect();
-        benchmark::DoNotOptimize(world.contacts().data());
-    }
+    for (auto _ : state) state.SetIterationTime(step_by_stages(world, Stage::detect));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -103,13 +143,6 @@ void step_swept_or_not(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-void respond(benchmark::State& state) {
-    World world = warm_gas(state);
-    world.detect();
-    for (auto _ : state) world.respond();
-    state.SetItemsProcessed(state.iterations() * state.range(0));
-}
-
 void probes(benchmark::State& state) {
     World world = warm_gas(state);
     for (auto _ : state) benchmark::DoNotOptimize(world.probes());
@@ -125,12 +158,17 @@ void step(benchmark::State& state) {
 }  // namespace
 
 // Two bodies is where a broad phase may cost more than it saves; 1,000 and 10,000 are the gas.
-BENCHMARK(integrate)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(detect)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(detect_grid_or_all_pairs)->ArgsProduct({{2, 8, 16, 32, 64, 128}, {0, 1}});
+// Range 0: N; range 1: 0 discrete timing, 1 event timing. A fixed count of steps: a stage
+// the scene does not run (the gas has no position corrector) takes no time, and the library
+// would run ever more steps to fill its minimum time.
+BENCHMARK_CAPTURE(stage_in_step, integrate, Stage::integrate)->ArgsProduct({{2, 1000, 10000}, {0, 1}})->UseManualTime()->Iterations(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(stage_in_step, detect, Stage::detect)->ArgsProduct({{2, 1000, 10000}, {0, 1}})->UseManualTime()->Iterations(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(stage_in_step, respond, Stage::respond)->ArgsProduct({{2, 1000, 10000}, {0, 1}})->UseManualTime()->Iterations(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(stage_in_step, correct, Stage::correct)->ArgsProduct({{2, 1000, 10000}, {0, 1}})->UseManualTime()->Iterations(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(stage_in_step, keep_answered_impacts, Stage::keep_answered_impacts)->ArgsProduct({{2, 1000, 10000}, {0, 1}})->UseManualTime()->Iterations(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(detect_grid_or_all_pairs)->ArgsProduct({{2, 8, 16, 32, 64, 128}, {0, 1}})->UseManualTime();
 BENCHMARK(step_with_one_shortcut_off)->ArgsProduct({{0, 1000}, {0, 1, 2, 3, 4, 5}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(step_swept_or_not)->ArgsProduct({{1000, 10000}, {0, 1}})->Unit(benchmark::kMicrosecond);
-BENCHMARK(respond)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(probes)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(step)->Arg(2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

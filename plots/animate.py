@@ -74,10 +74,10 @@ def frame_commands(scene, runs, view, box, t, factor, trails):
             datablocks.append(f"{name} << EOD\n" + "\n".join(f"{x!r},{y!r}" for x, y in path) + "\nEOD")
             plot.append(f"{name} using 1:2 with lines lc rgb '{motion.faded(colour, 0.45)}' lw 1.5"
                         f"{' dt 2' if student else ''} notitle")
-            position, q, _ = trajectory.states[index][i]
-            shape = motion.outline(scene.bodies[i], position, q, view)
+            position, axes, _ = trajectory.states[index][i]
+            shape = motion.outline(scene.bodies[i], position, axes, view)
             canvas.shape(shape, colour, None if student else colour, width=3.5 if student else 2.5, dashed=student,
-                         opacity=0.25, hands=motion.box_hands(scene.bodies[i], position, q, view))
+                         opacity=0.25, hands=motion.box_hands(scene.bodies[i], position, axes, view))
             canvas.point(view.project(position), colour, size=0.5)
         between = (t - motion.touch_window(scene.duration), t + 1e-12)
         strobe.draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,

@@ -125,24 +125,25 @@ class Scene:
 
 
 class Trajectory:
-    """The frames of a trajectory file: times, per frame per body (position, quaternion,
-    velocity) in `states`, and per frame per body the angular velocity in `spins`."""
+    """The frames of a trajectory file: times, per frame per body (position, axes, velocity)
+    in `states`, and per frame per body the angular velocity in `spins`. `axes` are the body's
+    own x, y and z axes in the world frame, as the simulator writes them (columns ex_x ... ez_z):
+    the pictures draw boxes and planes from them and hold no rotation code of their own."""
 
     def __init__(self, path):
         frames = {}
         with open(path, newline="") as f:
             for row in csv.DictReader(f):
                 frame = frames.setdefault(int(row["frame"]), (float(row["t"]), [], []))
-                frame[1].append(([float(row[c]) for c in "xyz"], [float(row[c]) for c in ("qw", "qx", "qy", "qz")],
-                                 [float(row[c]) for c in ("vx", "vy", "vz")]))
+                frame[1].append(([float(row[c]) for c in "xyz"], axes_of(row), [float(row[c]) for c in ("vx", "vy", "vz")]))
                 frame[2].append([float(row[c]) for c in ("wx", "wy", "wz")])
         self.steps = sorted(frames)
         self.times = [frames[s][0] for s in self.steps]
         self.states = [frames[s][1] for s in self.steps]
         self.spins = [frames[s][2] for s in self.steps]
         for t, states in zip(self.times, self.states):
-            for position, q, v in states:
-                if not all(math.isfinite(x) for x in position + q + v):
+            for position, axes, v in states:
+                if not all(math.isfinite(x) for x in position + [c for axis in axes for c in axis] + v):
                     raise ValueError(f"{path}: a body's state is not finite at t = {t} s (NaN or infinity)")
 
     def index_at(self, t):
@@ -277,12 +278,17 @@ def choose_view(scene, trajectories):
 
 # ---- Geometry ---------------------------------------------------------------------------------
 
-def rotate(q, v):
-    """q v q*, for a unit quaternion (w, x, y, z)."""
-    w, x, y, z = q
-    # t = 2 q_vec x v; v' = v + w t + q_vec x t
-    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
-    return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx)]
+AXIS_COLUMNS = [[f"e{axis}_{c}" for c in "xyz"] for axis in "xyz"]
+
+
+def axes_of(row):
+    """A body's own x, y and z axes in the world frame, from a trajectory row."""
+    return [[float(row[c]) for c in columns] for columns in AXIS_COLUMNS]
+
+
+def to_world(axes, local):
+    """A vector given in a body's frame (components along its axes), in the world frame."""
+    return [sum(local[k] * axes[k][i] for k in range(3)) for i in range(3)]
 
 
 def convex_hull(points):
@@ -305,7 +311,7 @@ def convex_hull(points):
     return lower[:-1] + upper[:-1]
 
 
-def outline(body, position, q, view):
+def outline(body, position, axes, view):
     """('circle', (cx, cy), r) or ('polygon', [points]) of a movable body in the view, or None."""
     shape = body["shape"]
     if shape["type"] == "sphere":
@@ -316,13 +322,13 @@ def outline(body, position, q, view):
         for sx in (-1, 1):
             for sy in (-1, 1):
                 for sz in (-1, 1):
-                    local = rotate(q, [sx * h[0], sy * h[1], sz * h[2]])
+                    local = to_world(axes, [sx * h[0], sy * h[1], sz * h[2]])
                     corners.append(view.project([position[i] + local[i] for i in range(3)]))
         return ("polygon", convex_hull(corners))
     return None
 
 
-def box_hands(body, position, q, view):
+def box_hands(body, position, axes, view):
     """For a box, three segments from its centre to the middles of its +x, +y and +z faces,
     in the view: the box's own axes, so that its turning shows even where its outline looks
     the same (a cube turned a quarter, a box flipped end over end). None for other shapes."""
@@ -333,8 +339,7 @@ def box_hands(body, position, q, view):
     centre = view.project(position)
     hands = []
     for axis in range(3):
-        local = rotate(q, [h[axis] if k == axis else 0.0 for k in range(3)])
-        hands.append((centre, view.project([position[k] + local[k] for k in range(3)])))
+        hands.append((centre, view.project([position[k] + h[axis] * axes[axis][k] for k in range(3)])))
     return hands
 
 
@@ -373,10 +378,10 @@ def normal_arrow_length(scene, contact, box):
     return min(3.0 * size, 0.1 * max(box[1] - box[0], box[3] - box[2]))
 
 
-def plane_line(body, position, q, view):
+def plane_line(body, position, axes, view):
     """(point, unit normal) of a plane's trace in the view, or None when the plane lies in the
     picture's own plane (its normal points at the viewer)."""
-    normal = rotate(q, [float(n) for n in body["shape"]["normal"]])
+    normal = to_world(axes, [float(n) for n in body["shape"]["normal"]])
     n2 = view.project(normal)
     length = math.hypot(*n2)
     if length < 1e-9:
@@ -566,8 +571,8 @@ def draw_planes(canvas, scene, trajectory, view, box):
     for i, body in enumerate(scene.bodies):
         if body["shape"]["type"] != "plane":
             continue
-        position, q, _ = trajectory.states[0][i]
-        trace = plane_line(body, position, q, view)
+        position, axes, _ = trajectory.states[0][i]
+        trace = plane_line(body, position, axes, view)
         if trace is None:
             continue
         (px, py), (nx, ny) = trace
@@ -592,8 +597,8 @@ def plane_bounds(scene, trajectory, view):
     points = []
     for i, body in enumerate(scene.bodies):
         if body["shape"]["type"] == "plane":
-            position, q, _ = trajectory.states[0][i]
-            trace = plane_line(body, position, q, view)
+            position, axes, _ = trajectory.states[0][i]
+            trace = plane_line(body, position, axes, view)
             if trace:
                 points.append(("polygon", [trace[0]]))
     return points

@@ -46,8 +46,8 @@ def write(path, chapter, scene, runs, view, box, slow_motion):
     for i, body in enumerate(scene.bodies):
         if body["shape"]["type"] != "plane":
             continue
-        position, q, _ = runs[0][0].states[0][i]
-        trace = motion.plane_line(body, position, q, view)
+        position, axes, _ = runs[0][0].states[0][i]
+        trace = motion.plane_line(body, position, axes, view)
         if trace is None:
             continue
         (px, py), (nx, ny) = trace

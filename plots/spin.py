@@ -16,6 +16,7 @@ import math
 from pathlib import Path
 
 from plots import figure_render
+from plots import motion
 
 AXES = "xyz"
 RANKS = ["smallest", "middle", "largest"]
@@ -47,13 +48,6 @@ def moment_ranks(half_extents):
     return {axis: RANKS[order.index(axis)] for axis in range(3)}
 
 
-def conjugate_rotate(q, v):
-    """R^T v for the unit quaternion q = (w, x, y, z): v turned from the world into the body frame."""
-    w, x, y, z = q[0], -q[1], -q[2], -q[3]
-    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
-    return (v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx))
-
-
 def body_spin(trajectory_path, body):
     """[(t, (wx, wy, wz) in the body frame)] of one body, from a `workbook-sim run --trajectory` file."""
     series = []
@@ -61,9 +55,9 @@ def body_spin(trajectory_path, body):
         for row in csv.DictReader(f):
             if int(row["body"]) != body:
                 continue
-            q = tuple(float(row[c]) for c in ("qw", "qx", "qy", "qz"))
-            w = tuple(float(row[c]) for c in ("wx", "wy", "wz"))
-            series.append((float(row["t"]), conjugate_rotate(q, w)))
+            # Along each of the body's own axes, as the simulator wrote them (R^T w).
+            w = [float(row[c]) for c in ("wx", "wy", "wz")]
+            series.append((float(row["t"]), tuple(sum(a * b for a, b in zip(axis, w)) for axis in motion.axes_of(row))))
     return series
 
 

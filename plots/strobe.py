@@ -107,8 +107,8 @@ def data_extent(scene, runs, view, count=SNAPSHOTS, pitch=None):
         for t, k in zip(snapshot_times(scene.duration, count), snapshot_indices(trajectory, scene.duration, count)):
             where = view_at(view, pitch, scene.duration, t, count)
             for i in motion.movable(scene):
-                position, q, _ = trajectory.states[k][i]
-                shapes.append(motion.outline(scene.bodies[i], position, q, where))
+                position, axes, _ = trajectory.states[k][i]
+                shapes.append(motion.outline(scene.bodies[i], position, axes, where))
     return motion.extent_of([s for s in shapes if s])
 
 
@@ -132,12 +132,12 @@ def draw_bodies(canvas, scene, trajectory, times, student=False, pitch=None):
         where = view_at(canvas.view, pitch, scene.duration, t, n)
         strength = 0.22 + 0.78 * (k / (n - 1) if n > 1 else 1.0)
         for i in motion.movable(scene):
-            position, q, _ = trajectory.states[index][i]
-            shape = motion.outline(scene.bodies[i], position, q, where)
+            position, axes, _ = trajectory.states[index][i]
+            shape = motion.outline(scene.bodies[i], position, axes, where)
             base = motion.STUDENT_COLOUR if student else motion.body_colour(scene, i)
             colour = motion.faded(base, strength)
             canvas.shape(shape, colour, None if student else colour, width=3.0 if student else 2.0, dashed=student,
-                         opacity=0.05 + 0.12 * strength, hands=motion.box_hands(scene.bodies[i], position, q, where))
+                         opacity=0.05 + 0.12 * strength, hands=motion.box_hands(scene.bodies[i], position, axes, where))
             canvas.point(where.project(position), colour, size=0.5)
 
 

@@ -69,7 +69,7 @@ GridProxy with_fast_flag(const ProxySet& set, GridProxy p) {
 
 }  // namespace
 
-void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, bool immovable_pairs) {
+void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, bool immovable_pairs, bool sorted) {
     pairs.clear();
     contact_keys_.clear();
     sweep_pairs_.clear();
@@ -94,7 +94,7 @@ void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, b
         return;
     }
     collect_pairs(set, immovable_pairs);
-    finish(set, pairs);
+    finish(set, pairs, sorted);
 }
 
 bool BroadPhase::build_grid(const ProxySet& set) {
@@ -378,8 +378,8 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
     }
 }
 
-void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs) {
-    std::sort(contact_keys_.begin(), contact_keys_.end());
+void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs, bool sorted) {
+    if (sorted) std::sort(contact_keys_.begin(), contact_keys_.end());
     resize_with_room(pairs, contact_keys_.size());
     for (std::size_t k = 0; k < contact_keys_.size(); ++k)
         pairs[k] = {static_cast<std::uint32_t>(contact_keys_[k] >> 32), static_cast<std::uint32_t>(contact_keys_[k])};

@@ -13,7 +13,9 @@
 #include "workbook/probes.hpp"
 #include "workbook/rotation.hpp"
 #include "workbook/shape_pairs.hpp"
-#include "workbook/world.hpp"
+#include "workbook/guards.hpp"
+#include "workbook/response_model.hpp"
+#include "workbook/world.hpp"  // Integrator
 
 namespace workbook {
 
@@ -156,21 +158,37 @@ void advance(RigidBody& body, const Vector3& gravity, double k, double tau) {
     if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
 }
 
-/// The body as time_of_impact() must see it `s` after the time its state refers to: at its
-/// position then, with the velocity that makes x + v tau + k g tau^2 continue the same curve
-/// (v + 2 k g s; the body's own velocity then is v + g s, equal only for k = 1/2). A body is
-/// advanced in one piece from its state to its next event, so predictions must follow that piece.
-RigidBody seen_after(const RigidBody& body, const Vector3& gravity, double k, double s) {
-    RigidBody seen = body;
-    if (s <= 0.0) return seen;
-    if (body.is_immovable()) {
-        seen.position += body.velocity * s;
-        return seen;
+/// Shows `body` to time_of_impact() as it must see it `s` after the time its state refers to,
+/// for as long as this lives: at its position then, with the velocity that makes
+/// x + v tau + k g tau^2 continue the same curve (v + 2 k g s; the body's own velocity then is
+/// v + g s, equal only for k = 1/2). A body is advanced in one piece from its state to its next
+/// event, so predictions must follow that piece. The two vectors are changed in place and put
+/// back afterwards: a copy of the whole body (328 bytes) at most predictions of a pile cost more
+/// than the time of impact itself.
+class SeenAfter {
+public:
+    SeenAfter(RigidBody& body, const Vector3& gravity, double k, double s)
+        : body_(body), position_(body.position), velocity_(body.velocity) {
+        if (s <= 0.0) return;
+        if (body.is_immovable()) {
+            body.position += velocity_ * s;
+            return;
+        }
+        body.position += velocity_ * s + gravity * (k * s * s);
+        body.velocity += gravity * (2.0 * k * s);
     }
-    seen.position += body.velocity * s + gravity * (k * s * s);
-    seen.velocity += gravity * (2.0 * k * s);
-    return seen;
-}
+    ~SeenAfter() {
+        body_.position = position_;
+        body_.velocity = velocity_;
+    }
+    SeenAfter(const SeenAfter&) = delete;
+    SeenAfter& operator=(const SeenAfter&) = delete;
+
+private:
+    RigidBody& body_;
+    Vector3 position_;
+    Vector3 velocity_;
+};
 
 /// A sphere against a box that does not spin. The sphere's centre moves relative to the box
 /// along d + u tau + a tau^2, and the gap is its distance from the box less the radius, which
@@ -245,23 +263,33 @@ Contact touching_contact(const RigidBody& b1, std::uint32_t i1, const RigidBody&
     Contact contact;
     contact.body1 = i1;
     contact.body2 = i2;
-    if (b1.shape.kind == ShapeKind::sphere && b2.shape.kind == ShapeKind::box) {
-        const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
-        const Vector3 offset = b1.position - nearest;
-        const double distance = length(offset);
-        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-        contact.add_point(nearest, 0.0);
-    } else if (b1.shape.kind == ShapeKind::box) {
-        contact.normal = rotate(b2.orientation, b2.shape.normal);
-        add_touching_corners(b1, b2.position, contact.normal, contact);
-    } else if (b2.shape.kind == ShapeKind::plane) {
-        contact.normal = rotate(b2.orientation, b2.shape.normal);
-        contact.add_point(b1.position - contact.normal * b1.shape.radius, 0.0);
-    } else {
-        const Vector3 offset = b1.position - b2.position;
-        const double distance = length(offset);
-        contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-        contact.add_point(b2.position + contact.normal * b2.shape.radius, 0.0);
+    // Body 1 is the sphere of a pair with one, the box of a box and a plane (answer_impact()).
+    switch (pair_of(b1.shape.kind, b2.shape.kind)) {
+        case ShapePair::sphere_box: {
+            const Vector3 nearest = nearest_point_on_box(b2, b2.position, b1.position);
+            const Vector3 offset = b1.position - nearest;
+            const double distance = length(offset);
+            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+            contact.add_point(nearest, 0.0);
+            break;
+        }
+        case ShapePair::plane_box:
+            contact.normal = rotate(b2.orientation, b2.shape.normal);
+            add_touching_corners(b1, b2.position, contact.normal, contact);
+            break;
+        case ShapePair::sphere_plane:
+            contact.normal = rotate(b2.orientation, b2.shape.normal);
+            contact.add_point(b1.position - contact.normal * b1.shape.radius, 0.0);
+            break;
+        case ShapePair::sphere_sphere: {
+            const Vector3 offset = b1.position - b2.position;
+            const double distance = length(offset);
+            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+            contact.add_point(b2.position + contact.normal * b2.shape.radius, 0.0);
+            break;
+        }
+        case ShapePair::plane_plane:
+        case ShapePair::box_box: break;  // never an impact (time_of_impact())
     }
     return contact;
 }
@@ -315,12 +343,12 @@ bool later(const ImpactEvent& a, const ImpactEvent& b) {
     return a.j > b.j;
 }
 
-/// The event loop of one step over `bodies`; see step_with_event_timing().
+/// The event loop of one step over `bodies`; see move_impact_to_impact().
 class EventLoop {
 public:
-    EventLoop(std::span<RigidBody> bodies, const WorldSettings& settings, EventScratch& scratch)
-        : bodies_(bodies), scratch_(scratch), gravity_(settings.gravity), k_(gravity_position_factor(settings.integrator)),
-          dt_(settings.time_step), count_(static_cast<std::uint32_t>(bodies.size())) {}
+    EventLoop(std::span<RigidBody> bodies, const EventMotion& motion, EventScratch& scratch)
+        : bodies_(bodies), scratch_(scratch), gravity_(motion.gravity), k_(motion.k), dt_(motion.dt),
+          count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
@@ -341,15 +369,7 @@ public:
             s.reach[i] = can_move(bodies_[i], dt_);
             s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
-        s.broad_phase.find_pairs(s.proxies, s.pairs);
-        // A kinematic plane that moves or turns can meet any body: each is its candidate.
-        for (std::uint32_t i = 0; i < count_; ++i) {
-            const RigidBody& body = bodies_[i];
-            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
-                continue;
-            for (std::uint32_t j = 0; j < count_; ++j)
-                if (j != i) add_extra(i, j);
-        }
+        s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
         // Each body's candidates, as lists by body (a counting sort of the pairs).
         s.start.assign(count_ + 1, 0);
         for (const BodyPair& p : s.pairs) ++s.start[p.first + 1], ++s.start[p.second + 1];
@@ -361,6 +381,14 @@ public:
         }
         for (std::uint32_t i = count_; i > 0; --i) s.start[i] = s.start[i - 1];
         s.start[0] = 0;
+        // A kinematic plane that moves or turns can meet any body: each is its candidate.
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
+            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
+                continue;
+            for (std::uint32_t j = 0; j < count_; ++j)
+                if (j != i) add_candidate(j, i);
+        }
         for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
         for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
     }
@@ -393,24 +421,46 @@ public:
         for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
     }
 
-    /// Every pair that may overlap at the end of the step, each once, sorted by (first, second):
-    /// the candidates, which hold every pair whose bodies came near each other.
-    std::span<const BodyPair> pairs_to_check() {
+    /// Every candidate pair that overlaps at the end of the step, each once, sorted by (first,
+    /// second) as detect() would find them: the candidates hold every pair whose bodies came
+    /// near each other. Only these few are sorted, not the candidates.
+    std::span<const BodyPair> overlapping_pairs() {
         EventScratch& s = scratch_;
-        if (s.extra.empty()) return s.pairs;
-        s.all_pairs.assign(s.pairs.begin(), s.pairs.end());
-        s.all_pairs.insert(s.all_pairs.end(), s.extra.begin(), s.extra.end());
+        s.all_pairs.clear();
+        for (const std::vector<BodyPair>* list : {&s.pairs, &s.extra})
+            for (const BodyPair& p : *list)
+                if (overlap_at_end(p.first, p.second)) s.all_pairs.push_back(p);
         const auto order = [](const BodyPair& a, const BodyPair& b) {
             return a.first != b.first ? a.first < b.first : a.second < b.second;
         };
         std::sort(s.all_pairs.begin(), s.all_pairs.end(), order);
-        const auto same = [](const BodyPair& a, const BodyPair& b) { return a.first == b.first && a.second == b.second; };
-        s.all_pairs.erase(std::unique(s.all_pairs.begin(), s.all_pairs.end(), same), s.all_pairs.end());
         return s.all_pairs;
+    }
+
+    /// Advances every body to the end of the step, each from the time its state refers to,
+    /// and notes where each sphere ends.
+    void finish() {
+        EventScratch& s = scratch_;
+        s.ends.resize(count_);
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            advance_to(i, dt_);
+            const RigidBody& body = bodies_[i];
+            s.ends[i] = {body.position, body.shape.kind == ShapeKind::sphere ? body.shape.radius : -1.0};
+        }
     }
 
 private:
     static constexpr std::uint32_t no_extra = std::numeric_limits<std::uint32_t>::max();
+
+    /// overlaps() of bodies i and j at the end of the step; two spheres from the centres and
+    /// radii finish() noted (the same numbers, so the same answer), since at N = 100,000 reading
+    /// the two bodies themselves missed the caches at nearly every candidate pair.
+    [[nodiscard]] bool overlap_at_end(std::uint32_t i, std::uint32_t j) const {
+        const SphereEnd& a = scratch_.ends[i];
+        const SphereEnd& b = scratch_.ends[j];
+        if (a.radius >= 0.0 && b.radius >= 0.0) return spheres_overlap(a.centre, a.radius, b.centre, b.radius);
+        return overlaps(bodies_[i], bodies_[j]);
+    }
 
     /// How far `body` may move in `left` seconds from the state it has, m: |v| left, plus for
     /// a movable body what gravity adds, (|k| + 1) |g| left^2, which also covers the motion
@@ -418,6 +468,23 @@ private:
     [[nodiscard]] double can_move(const RigidBody& body, double left) const {
         const double speed_part = length(body.velocity) * left;
         return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+    }
+
+    /// True when body b is among body a's candidates already (its lists are short: the
+    /// bodies next to it).
+    [[nodiscard]] bool is_candidate(std::uint32_t a, std::uint32_t b) const {
+        const EventScratch& s = scratch_;
+        for (std::uint32_t n = s.start[a]; n < s.start[a + 1]; ++n)
+            if (s.partners[n] == b) return true;
+        for (std::uint32_t n = s.extra_head[a]; n != no_extra; n = s.extra_nodes[n].next)
+            if (s.extra_nodes[n].partner == b) return true;
+        return false;
+    }
+
+    /// Makes bodies a and b candidates, found after the broad phase, unless they are already:
+    /// a pair listed twice would be predicted twice at every event of its bodies.
+    void add_candidate(std::uint32_t a, std::uint32_t b) {
+        if (!is_candidate(a, b)) add_extra(a, b);
     }
 
     /// Records bodies a and b as candidates found after the broad phase.
@@ -445,11 +512,10 @@ private:
                                   can_move(body_b, dt_ - s.since[b]);
             if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
         }
-        // Each as time_of_impact() must see it at t (a copy only for a body whose state is older).
-        const auto tau = t == s.since[a] && t == s.since[b]
-                             ? time_of_impact(body_a, body_b, gravity_, k_, dt_ - t)
-                             : time_of_impact(seen_after(body_a, gravity_, k_, t - s.since[a]),
-                                              seen_after(body_b, gravity_, k_, t - s.since[b]), gravity_, k_, dt_ - t);
+        // Each as time_of_impact() must see it at t (moved only when its state is older).
+        const SeenAfter seen_a(bodies_[a], gravity_, k_, t - s.since[a]);
+        const SeenAfter seen_b(bodies_[b], gravity_, k_, t - s.since[b]);
+        const auto tau = time_of_impact(body_a, body_b, gravity_, k_, dt_ - t);
         if (!tau) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
         s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
@@ -467,17 +533,24 @@ private:
         return !bodies_[i].is_immovable() && needs_reach(i, t) > scratch_.reach[i];
     }
 
+    /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
+    /// the step, comes within `radius` of i's centre then.
+    void add_near(std::uint32_t i, double radius) {
+        EventScratch& s = scratch_;
+        const GridProxy& p = s.proxies.proxies[i];
+        s.near.clear();
+        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, radius, s.near);
+        for (const std::uint32_t j : s.near)
+            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_candidate(i, j);
+    }
+
     /// Widens body i's reach to what it now needs, twice over (so that a body sped up again
     /// and again is searched a few times, not at every event), and adds as candidates the
     /// bodies whose widened spheres its new one meets, from the cells near it.
     void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
         s.reach[i] = 2.0 * needs_reach(i, t);
-        const GridProxy& p = s.proxies.proxies[i];
-        s.near.clear();
-        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, bounding_radius(bodies_[i]) + s.reach[i], s.near);
-        for (const std::uint32_t j : s.near)
-            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_extra(i, j);
+        add_near(i, bounding_radius(bodies_[i]) + s.reach[i]);
     }
 
     std::span<RigidBody> bodies_;
@@ -488,66 +561,50 @@ private:
     std::uint32_t count_;
 };
 
+/// Moves the two bodies of `event` to its moment and answers their contact there with the
+/// model's responder; returns the kinetic energy the response changed.
+double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, EventLoop& loop, const ResponseModel& model,
+                     const FiniteCheck& check, EventScratch& scratch) {
+    std::uint32_t first = event.i, second = event.j;
+    loop.advance_to(first, event.t);
+    loop.advance_to(second, event.t);
+    // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
+    if (bodies[first].shape.kind == ShapeKind::plane ||
+        (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
+        std::swap(first, second);
+    const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
+    const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+    model.respond(bodies[first], bodies[second], contact);
+    const double change = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+    scratch.contacts.push_back(contact);
+    if (check.on && !(poison(bodies[first]) + poison(bodies[second]) == 0.0))
+        check_finite(bodies, check.names, check.step, "event: respond");
+    loop.changed(first, event.t);
+    loop.changed(second, event.t);
+    return change;
+}
+
 }  // namespace
 
-void World::step_with_event_timing() {
-    World& world = *this;
-    const WorldSettings& settings = world.settings_;
-    std::span<RigidBody> bodies = world.bodies_;
-    EventScratch& scratch = world.event_scratch_;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    const ResponseModel& model = world.model_;
+void advance_whole_step(std::span<RigidBody> bodies, const EventMotion& motion) {
+    for (RigidBody& body : bodies) advance(body, motion.gravity, motion.k, motion.dt);
+}
 
-    // Without a responder nothing changes at an impact: the bodies pass as the discrete loop
-    // would, so there are no events to follow.
-    double energy_change = 0.0;
-    EventLoop loop(bodies, settings, scratch);
-    if (model.respond == nullptr) {
-        scratch.since.assign(count, 0.0);
-        for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
-        world.guard("event: advance");
-        world.find_contacts(false);
-        if (!(world.correct_contacts() == 0.0)) world.guard("correct");
-        world.response_energy_change_ = 0.0;
-        return;
-    }
+ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMotion& motion, const ResponseModel& model,
+                                      const FiniteCheck& check, EventScratch& scratch) {
+    const auto count = static_cast<std::uint32_t>(bodies.size());
+    EventLoop loop(bodies, motion, scratch);
     loop.start();
+    double energy_change = 0.0;
     const std::size_t event_budget = 8 + 2 * std::size_t{count};
     for (std::size_t events = 0; events < event_budget; ++events) {
         const std::optional<ImpactEvent> event = loop.next();
         if (!event) break;
-        std::uint32_t first = event->i, second = event->j;
-        loop.advance_to(first, event->t);
-        loop.advance_to(second, event->t);
-        // Body 2 of a pair with a plane is the plane, and of a sphere and a box the box, as everywhere else.
-        if (bodies[first].shape.kind == ShapeKind::plane ||
-            (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
-            std::swap(first, second);
-        const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-        const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
-        model.respond(bodies[first], bodies[second], contact);
-        energy_change += kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
-        scratch.contacts.push_back(contact);
-        const std::uint32_t changed[] = {first, second};
-        world.guard_bodies("event: respond", changed);
-        loop.changed(first, event->t);
-        loop.changed(second, event->t);
+        energy_change += answer_impact(bodies, *event, loop, model, check, scratch);
     }
-    // Every body to the end of the step, each from the time its state refers to.
-    for (std::uint32_t i = 0; i < count; ++i) loop.advance_to(i, settings.time_step);
-    world.guard("event: advance");
-
-    // The discrete back-stop: whatever still overlaps beyond rounding (deep initial overlaps,
-    // resting contacts, pairs left out of the event loop), in index order as detect() would
-    // find them, among the candidates, then the world's own response and correction.
-    world.contacts_.clear();
-    world.used_broad_phase_ = scratch.broad_phase.has_grid();
-    for (const auto [i, j] : loop.pairs_to_check()) world.add_contact_if_any(i, j);
-    if (!(world.respond_contacts() == 0.0)) world.guard("respond");
-    if (!(world.correct_contacts() == 0.0)) world.guard("correct");
-    world.response_energy_change_ += energy_change;
-    // The contacts answered at their moment come first, in the order they were answered.
-    world.contacts_.insert(world.contacts_.begin(), scratch.contacts.begin(), scratch.contacts.end());
+    loop.finish();  // every body to the end of the step
+    if (check.on) check_finite(bodies, check.names, check.step, "event: advance");
+    return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};
 }
 
 }  // namespace workbook

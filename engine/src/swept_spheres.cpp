@@ -4,12 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "workbook/box_detection.hpp"
+#include "workbook/broad_phase.hpp"
 #include "workbook/detection.hpp"
-#include "workbook/event_timing.hpp"
 #include "workbook/shape_pairs.hpp"
-#include "workbook/world.hpp"
 
 namespace workbook {
 
@@ -101,6 +102,14 @@ std::optional<double> first_touch(const RigidBody& a, const Vector3& a0, const R
     return std::nullopt;
 }
 
+/// The unit vector from `from` towards `to` (a contact normal, pointing at body 1), or the
+/// fixed normal detection uses when the two points coincide.
+Vector3 away_from(const Vector3& from, const Vector3& to) {
+    const Vector3 offset = to - from;
+    const double distance = length(offset);
+    return distance > 0.0 ? offset / distance : coincident_centres_normal;
+}
+
 /// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
 /// index: what trying every body in index order finds, whatever order the candidates come in.
 struct EarliestTouch {
@@ -116,178 +125,223 @@ struct EarliestTouch {
 
 }  // namespace
 
-void World::sweep_fast_spheres() {
-    World& world = *this;
-    std::span<RigidBody> bodies = world.bodies_;
-    SweepScratch& scratch = world.sweep_scratch_;
-    const auto count = static_cast<std::uint32_t>(bodies.size());
-    const WorldSettings& settings = world.settings_;
-    // With this step's grid, only the partners the broad phase found are tried (same answer as
-    // trying all: BroadPhase::sweep_partners()); without it, every body.
-    ProxySet& set = world.proxies_;
-    const bool use_grid = world.used_broad_phase_ && world.broad_phase_.has_grid() && set.swept;
+namespace {
 
-    // Each body's start, kept while bodies are moved back: a body moved back did start there.
-    // The grid's gathering found them already.
-    std::vector<Vector3>& starts = scratch.starts;
-    if (!use_grid) {
-        const double dt = settings.time_step;
-        const Vector3 gravity_term = settings.gravity * ((1.0 - gravity_position_factor(settings.integrator)) * dt * dt);
-        starts.resize(count);
-        for (std::uint32_t j = 0; j < count; ++j) starts[j] = start_of_step(bodies[j], dt, gravity_term);
-    }
-    double smallest_radius = std::numeric_limits<double>::infinity();
-    if (!use_grid) {
-        for (const RigidBody& body : bodies)
-            if (body.shape.kind == ShapeKind::sphere) smallest_radius = std::min(smallest_radius, body.shape.radius);
-    }
+/// One run of the swept test over the bodies of a detect() (see swept_spheres.hpp), in three
+/// parts a newcomer can read one at a time: find each fast sphere's earliest touch
+/// (earliest_touch()), move it back there (move_back()), then detect the moved spheres again
+/// (detect_moved_again()).
+class Sweep {
+public:
+    Sweep(std::span<RigidBody> bodies, const SweepGrid& grid, std::vector<Contact>& contacts, SweepScratch& scratch)
+        : bodies_(bodies), grid_(grid), use_grid_(grid.broad_phase != nullptr), contacts_(contacts), scratch_(scratch),
+          count_(static_cast<std::uint32_t>(bodies.size())) {}
 
-    // Bodies moved back, flagged by index, and the touching contacts found on the way, in the
-    // order they were found; both are merged into the contacts at the end (see there).
-    scratch.moved.clear();
-    scratch.found.clear();
-    if (scratch.is_moved.size() < count) {
-        scratch.is_moved.resize(count, 0);
-        // Room for more moves than a step makes (the gas of bench/ moves 0.7% of its spheres a
-        // step), so that a warm step does not allocate when one happens to make a few more.
-        scratch.moved.reserve(count / 32 + 16);
-        scratch.found.reserve(count / 32 + 16);
-        scratch.candidates.reserve(256);
-    }
-
-    for (std::uint32_t i = 0; i < count; ++i) {
-        EarliestTouch touch{1.0, count};
-        Vector3 fast_start;
-        if (use_grid) {
-            // Only fast spheres have partners (the grid found them). Most partners could not
-            // touch as the grid saw them, and are tried again only if they have been moved back
-            // since (see BroadPhase::sweep_partners()): the sphere itself is read only when one can.
-            const std::span<const std::uint32_t> partners = world.broad_phase_.sweep_partners(i);
-            const GridProxy* p = nullptr;
-            Vector3 end;
-            for (const std::uint32_t entry : partners) {
-                const std::uint32_t j = entry & BroadPhase::partner_index;
-                const bool moved = scratch.is_moved[j] != 0;
-                if (!(entry & BroadPhase::partner_may_touch) && !moved) continue;
-                if (p == nullptr) {
-                    // Ends from the proxies: the same numbers as the bodies' positions (a body moved
-                    // back has its proxy moved with it), read from contiguous memory.
-                    p = &set.proxies[i];
-                    end = {p->x, p->y, p->z};
-                    fast_start = p->start;
-                }
-                const GridProxy& q = set.proxies[j];
-                if (q.plane) {
-                    const PlaneProxy& plane = *std::lower_bound(set.planes.begin(), set.planes.end(), j, plane_before);
-                    touch.offer(first_touch_plane(end, fast_start, p->radius, plane.point, plane.normal), j);
-                    continue;
-                }
-                const Vector3 other_end{q.x, q.y, q.z};
-                const Vector3& other_start = q.start;
-                if (!q.sphere) {
-                    touch.offer(first_touch_box(end, fast_start, p->radius, bodies[j], other_end, other_start), j);
-                    continue;
-                }
-                if (!moved || spheres_may_touch(end, fast_start, p->radius, other_end, other_start, q.radius))
-                    touch.offer(first_touch_spheres(end, fast_start, p->radius, other_end, other_start, q.radius), j);
-            }
-        } else {
-            fast_start = starts[i];
-            const RigidBody& body = bodies[i];
-            if (body.is_immovable() || body.shape.kind != ShapeKind::sphere) continue;
-            if (!(length(body.position - fast_start) > smallest_radius)) continue;
-            for (std::uint32_t j = 0; j < count; ++j)
-                if (j != i) touch.offer(first_touch(body, fast_start, bodies[j], starts[j]), j);
+    void run(double dt, const Vector3& gravity_term) {
+        if (!use_grid_) gather_starts(dt, gravity_term);
+        clear_scratch();
+        for (std::uint32_t i = 0; i < count_; ++i) {
+            Vector3 fast_start;
+            const EarliestTouch touch = earliest_touch(i, fast_start);
+            if (touch.partner != count_) scratch_.found.push_back(move_back(i, fast_start, touch));
         }
-        if (touch.partner == count) continue;
+        if (scratch_.moved.empty()) return;
+        detect_moved_again();
+        for (std::uint32_t i : scratch_.moved) scratch_.is_moved[i] = 0;
+    }
 
-        // The fast sphere goes back to the moment of touching, and the contacts found for it at
-        // the end of the step give way to the one found on the way. Its partner keeps its place
-        // and its other contacts (taking those away would let a resting body sink); the normal
-        // is taken where both were at that moment.
-        RigidBody& fast = bodies[i];
+private:
+    /// Without the grid: each body's start (the grid's gathering found them already), kept
+    /// while bodies are moved back, as a body moved back did start there; and the smallest
+    /// sphere radius, the travel from which a sphere is traced.
+    void gather_starts(double dt, const Vector3& gravity_term) {
+        scratch_.starts.resize(count_);
+        for (std::uint32_t j = 0; j < count_; ++j) scratch_.starts[j] = start_of_step(bodies_[j], dt, gravity_term);
+        smallest_radius_ = std::numeric_limits<double>::infinity();
+        for (const RigidBody& body : bodies_)
+            if (body.shape.kind == ShapeKind::sphere) smallest_radius_ = std::min(smallest_radius_, body.shape.radius);
+    }
+
+    /// Bodies moved back, flagged by index, and the touching contacts found on the way, in the
+    /// order they were found; both are merged into the contacts at the end (detect_moved_again()).
+    void clear_scratch() {
+        scratch_.moved.clear();
+        scratch_.found.clear();
+        if (scratch_.is_moved.size() < count_) {
+            scratch_.is_moved.resize(count_, 0);
+            // Room for more moves than a step makes (the gas of bench/ moves 0.7% of its spheres a
+            // step), so that a warm step does not allocate when one happens to make a few more.
+            scratch_.moved.reserve(count_ / 32 + 16);
+            scratch_.found.reserve(count_ / 32 + 16);
+            scratch_.candidates.reserve(256);
+        }
+    }
+
+    /// Where body i started the step.
+    [[nodiscard]] const Vector3& start_of(std::uint32_t i) const {
+        return use_grid_ ? grid_.proxies->proxies[i].start : scratch_.starts[i];
+    }
+
+    /// Body i's earliest touch along its path (none unless it is a fast sphere), and its start.
+    EarliestTouch earliest_touch(std::uint32_t i, Vector3& fast_start) const {
+        EarliestTouch touch{1.0, count_};
+        if (use_grid_) {
+            touch_grid_partners(i, touch, fast_start);
+            return touch;
+        }
+        // Without the grid, every body is tried.
+        fast_start = scratch_.starts[i];
+        const RigidBody& body = bodies_[i];
+        if (body.is_immovable() || body.shape.kind != ShapeKind::sphere) return touch;
+        if (!(length(body.position - fast_start) > smallest_radius_)) return touch;
+        for (std::uint32_t j = 0; j < count_; ++j)
+            if (j != i) touch.offer(first_touch(body, fast_start, bodies_[j], scratch_.starts[j]), j);
+        return touch;
+    }
+
+    /// With this step's grid, only the partners the broad phase found are tried (the same
+    /// answer as trying all: BroadPhase::sweep_partners()); only fast spheres have any. Most
+    /// partners could not touch as the grid saw them and are tried again only if they have been
+    /// moved back since: the sphere itself is read only when one can. Ends come from the
+    /// proxies: the same numbers as the bodies' positions (a body moved back has its proxy moved
+    /// with it), read from contiguous memory.
+    void touch_grid_partners(std::uint32_t i, EarliestTouch& touch, Vector3& fast_start) const {
+        const ProxySet& set = *grid_.proxies;
+        const GridProxy* p = nullptr;
+        Vector3 end;
+        for (const std::uint32_t entry : grid_.broad_phase->sweep_partners(i)) {
+            const std::uint32_t j = entry & BroadPhase::partner_index;
+            const bool moved = scratch_.is_moved[j] != 0;
+            if (!(entry & BroadPhase::partner_may_touch) && !moved) continue;
+            if (p == nullptr) {
+                p = &set.proxies[i];
+                end = {p->x, p->y, p->z};
+                fast_start = p->start;
+            }
+            const GridProxy& q = set.proxies[j];
+            if (q.plane) {
+                const PlaneProxy& plane = *std::lower_bound(set.planes.begin(), set.planes.end(), j, plane_before);
+                touch.offer(first_touch_plane(end, fast_start, p->radius, plane.point, plane.normal), j);
+                continue;
+            }
+            const Vector3 other_end{q.x, q.y, q.z};
+            if (!q.sphere) {
+                touch.offer(first_touch_box(end, fast_start, p->radius, bodies_[j], other_end, q.start), j);
+                continue;
+            }
+            if (!moved || spheres_may_touch(end, fast_start, p->radius, other_end, q.start, q.radius))
+                touch.offer(first_touch_spheres(end, fast_start, p->radius, other_end, q.start, q.radius), j);
+        }
+    }
+
+    /// The fast sphere i goes back to the moment of touching, and the contacts found for it at
+    /// the end of the step give way to the one found on the way (returned). Its partner keeps
+    /// its place and its other contacts (taking those away would let a resting body sink); the
+    /// normal is taken where both were at that moment.
+    Contact move_back(std::uint32_t i, const Vector3& fast_start, const EarliestTouch& touch) {
+        RigidBody& fast = bodies_[i];
         const double earliest = touch.fraction;
-        const RigidBody& other = bodies[touch.partner];
-        const Vector3 other_start = use_grid ? set.proxies[touch.partner].start : starts[touch.partner];
+        const RigidBody& other = bodies_[touch.partner];
+        const Vector3 other_start = start_of(touch.partner);
         fast.position = fast_start + (fast.position - fast_start) * earliest;
-        if (use_grid) {
-            GridProxy& p = set.proxies[i];
+        if (use_grid_) {
+            GridProxy& p = grid_.proxies->proxies[i];
             p.x = fast.position.x, p.y = fast.position.y, p.z = fast.position.z;
         }
         const Vector3 other_then = other_start + (other.position - other_start) * earliest;
-        scratch.moved.push_back(i);
-        scratch.is_moved[i] = 1;
+        scratch_.moved.push_back(i);
+        scratch_.is_moved[i] = 1;
         Contact contact;
-        const bool plane = other.shape.kind == ShapeKind::plane;
         contact.body1 = i;
         contact.body2 = touch.partner;
-        if (plane) {
-            contact.normal = rotate(other.orientation, other.shape.normal);
-        } else if (other.shape.kind == ShapeKind::box) {
-            const Vector3 offset = fast.position - nearest_point_on_box(other, other_then, fast.position);
-            const double distance = length(offset);
-            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
-        } else {
-            const Vector3 offset = fast.position - other_then;
-            const double distance = length(offset);
-            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+        switch (pair_of(fast.shape.kind, other.shape.kind)) {
+            case ShapePair::sphere_plane: contact.normal = rotate(other.orientation, other.shape.normal); break;
+            case ShapePair::sphere_box:
+                contact.normal = away_from(nearest_point_on_box(other, other_then, fast.position), fast.position);
+                break;
+            case ShapePair::sphere_sphere: contact.normal = away_from(other_then, fast.position); break;
+            case ShapePair::plane_plane:
+            case ShapePair::plane_box:
+            case ShapePair::box_box: break;  // the fast body is a sphere
         }
         contact.add_point(fast.position - contact.normal * fast.shape.radius, 0.0);
-        scratch.found.push_back(contact);  // the pair was not among the contacts: it did not overlap at the end
+        return contact;  // the pair was not among the contacts: it did not overlap at the end
     }
-    if (scratch.moved.empty()) return;
 
-    // The contacts found for a moved sphere at the end of the step no longer hold; it is
-    // detected again where it now is. In a dense pile that place overlaps other bodies, and
-    // often the partner itself, which has moved on since the moment of touching; leaving those
-    // overlaps out of this step's correction let them grow (to two thirds of a diameter under
-    // 100 g in the stress corpus), and the projection of such overlaps then pushed neighbours'
-    // centres through the walls of a box. Only when the partner does not overlap it there does
-    // the pair get the touching contact of the moment they met.
-    //
-    // One pass, as if each move (in index order) had at once removed every contact of the moved
-    // sphere, detected it again against every body where they stood then, and appended its
-    // touching contact: a detected contact stays unless one of its bodies moved; a contact
-    // found for moved sphere i stays unless its other body moved later (at a larger index),
-    // which is then detected again against i in its turn.
-    std::erase_if(world.contacts_, [&](const Contact& c) { return scratch.is_moved[c.body1] || scratch.is_moved[c.body2]; });
-    // With the grid, the spheres that may overlap sphere i where it now is are among its swept
-    // partners (its place is on its path, theirs on theirs); the planes and the boxes are tried
-    // whole. Sorted, the candidates are tried in the same order as every body would be.
-    scratch.boxes.clear();
-    if (use_grid)
-        for (std::uint32_t j = 0; j < count; ++j)
-            if (!set.proxies[j].sphere && !set.proxies[j].plane) scratch.boxes.push_back(j);
-    for (std::size_t k = 0; k < scratch.moved.size(); ++k) {
-        const std::uint32_t i = scratch.moved[k];
-        const Contact& touching = scratch.found[k];
-        bool partner_overlaps = false;
-        auto try_body = [&](std::uint32_t j) {
-            if (j == i || (scratch.is_moved[j] && j > i)) return;
-            auto contact = i < j ? collide(bodies[i], i, bodies[j], j) : collide(bodies[j], j, bodies[i], i);
-            if (!contact) return;
-            world.contacts_.push_back(*contact);
-            partner_overlaps = partner_overlaps || j == touching.body2;
-        };
-        if (use_grid) {
-            // Planes are partners only when a centre ended behind them, so every plane is tried.
-            scratch.candidates.assign(scratch.boxes.begin(), scratch.boxes.end());
-            for (const PlaneProxy& plane : set.planes) scratch.candidates.push_back(plane.index);
-            for (const std::uint32_t entry : world.broad_phase_.sweep_partners(i))
-                scratch.candidates.push_back(entry & BroadPhase::partner_index);
-            // (The iterator algorithms, not std::ranges: Clang 14 cannot compile ranges::unique
-            // with GCC 12's standard library, and libc++ 14 has none of the ranges algorithms.)
-            std::sort(scratch.candidates.begin(), scratch.candidates.end());
-            scratch.candidates.erase(std::unique(scratch.candidates.begin(), scratch.candidates.end()),
-                                     scratch.candidates.end());
-            for (const std::uint32_t j : scratch.candidates) try_body(j);
-        } else {
-            for (std::uint32_t j = 0; j < count; ++j) try_body(j);
+    /// The contacts found for a moved sphere at the end of the step no longer hold; it is
+    /// detected again where it now is. In a dense pile that place overlaps other bodies, and
+    /// often the partner itself, which has moved on since the moment of touching; leaving those
+    /// overlaps out of this step's correction let them grow (to two thirds of a diameter under
+    /// 100 g in the stress corpus), and the projection of such overlaps then pushed neighbours'
+    /// centres through the walls of a box. Only when the partner does not overlap it there does
+    /// the pair get the touching contact of the moment they met.
+    ///
+    /// One pass, as if each move (in index order) had at once removed every contact of the moved
+    /// sphere, detected it again against every body where they stood then, and appended its
+    /// touching contact: a detected contact stays unless one of its bodies moved; a contact
+    /// found for moved sphere i stays unless its other body moved later (at a larger index),
+    /// which is then detected again against i in its turn.
+    void detect_moved_again() {
+        std::erase_if(contacts_, [&](const Contact& c) { return scratch_.is_moved[c.body1] || scratch_.is_moved[c.body2]; });
+        if (use_grid_) gather_boxes();
+        for (std::size_t k = 0; k < scratch_.moved.size(); ++k) {
+            const std::uint32_t i = scratch_.moved[k];
+            const Contact& touching = scratch_.found[k];
+            bool partner_overlaps = false;
+            for (const std::uint32_t j : candidates_again(i)) {
+                if (j == i || (scratch_.is_moved[j] && j > i)) continue;
+                auto contact = i < j ? collide(bodies_[i], i, bodies_[j], j) : collide(bodies_[j], j, bodies_[i], i);
+                if (!contact) continue;
+                contacts_.push_back(*contact);
+                partner_overlaps = partner_overlaps || j == touching.body2;
+            }
+            if (!partner_overlaps && !(touching.body2 > i && scratch_.is_moved[touching.body2])) contacts_.push_back(touching);
         }
-        if (!partner_overlaps && !(touching.body2 > i && scratch.is_moved[touching.body2]))
-            world.contacts_.push_back(touching);
     }
-    for (std::uint32_t i : scratch.moved) scratch.is_moved[i] = 0;
+
+    /// The boxes, which the swept test's partners leave out.
+    void gather_boxes() {
+        scratch_.boxes.clear();
+        const ProxySet& set = *grid_.proxies;
+        for (std::uint32_t j = 0; j < count_; ++j)
+            if (!set.proxies[j].sphere && !set.proxies[j].plane) scratch_.boxes.push_back(j);
+    }
+
+    /// The bodies moved sphere i is detected again against, in index order. With the grid, the
+    /// spheres that may overlap it where it now is are among its swept partners (its place is on
+    /// its path, theirs on theirs); the planes and the boxes are tried whole (planes are
+    /// partners only when a centre ended behind them). Without it, every body.
+    std::span<const std::uint32_t> candidates_again(std::uint32_t i) {
+        std::vector<std::uint32_t>& candidates = scratch_.candidates;
+        if (!use_grid_) {
+            candidates.resize(count_);
+            for (std::uint32_t j = 0; j < count_; ++j) candidates[j] = j;
+            return candidates;
+        }
+        candidates.assign(scratch_.boxes.begin(), scratch_.boxes.end());
+        for (const PlaneProxy& plane : grid_.proxies->planes) candidates.push_back(plane.index);
+        for (const std::uint32_t entry : grid_.broad_phase->sweep_partners(i)) candidates.push_back(entry & BroadPhase::partner_index);
+        // (The iterator algorithms, not std::ranges: Clang 14 cannot compile ranges::unique
+        // with GCC 12's standard library, and libc++ 14 has none of the ranges algorithms.)
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        return candidates;
+    }
+
+    std::span<RigidBody> bodies_;
+    SweepGrid grid_;
+    bool use_grid_;
+    std::vector<Contact>& contacts_;
+    SweepScratch& scratch_;
+    std::uint32_t count_;
+    double smallest_radius_ = 0.0;  ///< without the grid: the travel from which a sphere is traced
+};
+
+}  // namespace
+
+void sweep_fast_spheres(std::span<RigidBody> bodies, double dt, const Vector3& gravity_term, const SweepGrid& grid,
+                        std::vector<Contact>& contacts, SweepScratch& scratch) {
+    Sweep(bodies, grid, contacts, scratch).run(dt, gravity_term);
 }
 
 }  // namespace workbook

@@ -45,10 +45,14 @@ World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseMode
 }
 
 void World::step() {
-    // Under event timing the bodies move from impact to impact, each answered at its moment,
-    // and what still overlaps at the end is answered as the discrete stages would.
     if (settings_.contact_timing == ContactTiming::event) {
-        step_with_event_timing();
+        // The bodies move from impact to impact, each answered at its moment; what still
+        // overlaps at the end is answered as the discrete stages would.
+        integrate_impact_to_impact();  // 1. to each impact in turn, answered there, then to the end
+        detect();                      // 2. what still overlaps, among the pairs that came near
+        respond();                     // 3. the model's velocity responder, once per contact
+        correct();                     // 4. the model's position corrector, once per contact
+        keep_answered_impacts();       // the impacts of 1 join the contacts and the energy probe
     } else {
         integrate();  // 1. gravity, then positions and orientations
         detect();     // 2. overlapping pairs, and the swept test of fast spheres
@@ -63,22 +67,29 @@ void World::step() {
     time_ += settings_.time_step;
 }
 
+void World::integrate_impact_to_impact() {
+    const EventMotion motion{settings_.gravity, gravity_position_factor(settings_.integrator), settings_.time_step};
+    proxies_fresh_ = false;
+    impacts_ = {};
+    event_scratch_.contacts.clear();
+    if (model_.respond == nullptr) {
+        advance_whole_step(bodies_, motion);
+        guard("event: advance");
+        return;
+    }
+    impacts_ = move_impact_to_impact(bodies_, motion, model_, {settings_.check_finite, body_names_, steps_ + 1}, event_scratch_);
+    impacts_fresh_ = true;
+}
+
+void World::keep_answered_impacts() {
+    response_energy_change_ += impacts_.energy_change;
+    // The contacts answered at their moment come first, in the order they were answered.
+    contacts_.insert(contacts_.begin(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
+}
+
 void World::guard(const char* stage) const {
     if (settings_.check_finite) check_finite(bodies_, body_names_, steps_ + 1, stage);
 }
-
-namespace {
-
-/// 0 when every number the guard checks in `body` is finite, NaN otherwise: x * 0 is 0 for a
-/// finite x and NaN for a NaN or an infinity (and a sum too large to represent gives a NaN
-/// as well, which only sends the guard to look at every body, where it finds nothing).
-double poison(const RigidBody& b) {
-    return (b.position.x + b.position.y + b.position.z + b.velocity.x + b.velocity.y + b.velocity.z + b.orientation.w +
-            b.orientation.x + b.orientation.y + b.orientation.z + b.angular_velocity.x + b.angular_velocity.y +
-            b.angular_velocity.z) * 0.0;
-}
-
-}  // namespace
 
 void World::guard_bodies(const char* stage, std::span<const std::uint32_t> changed) const {
     if (!settings_.check_finite) return;
@@ -168,11 +179,26 @@ void World::gather_body(std::uint32_t i, bool swept, double dt, const Vector3& g
 }
 
 void World::detect() {
+    if (impacts_fresh_) {
+        // After integrate_impact_to_impact(), which found the overlapping pairs among those
+        // whose bodies came near each other, in index order as below.
+        impacts_fresh_ = false;
+        contacts_.clear();
+        used_broad_phase_ = impacts_.used_grid;
+        for (const auto [i, j] : impacts_.overlapping_pairs) add_contact_if_any(i, j);
+        return;
+    }
     // The proxies integrate() gathered, unless the bodies may have changed since.
     find_contacts(proxies_fresh_);
     proxies_fresh_ = false;
     const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
-    if (swept) sweep_fast_spheres();
+    if (swept) {
+        const double dt = settings_.time_step;
+        const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+        SweepGrid grid;
+        if (used_broad_phase_ && broad_phase_.has_grid() && proxies_.swept) grid = {&proxies_, &broad_phase_};
+        sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_);
+    }
     // Only the spheres the swept test moved back changed here; the guard looks at those (and,
     // on a find, at all, to name the first in body order).
     guard_bodies("detect", swept ? std::span<const std::uint32_t>(sweep_scratch_.moved) : std::span<const std::uint32_t>());

@@ -164,6 +164,41 @@ TEST_CASE("step() is integrate, detect, respond, correct in that order", "[world
     CHECK(staged.time() == 0.0);
 }
 
+TEST_CASE("under event timing step() is integrate_impact_to_impact, detect, respond, correct, keep_answered_impacts",
+          "[world][stages][event]") {
+    // A ball falling onto the ground and another rolling into a resting one: impacts within a
+    // step, and a resting contact for the back-stop.
+    const std::vector<RigidBody> bodies{make_immovable_plane({0, 1, 0}, {0, 0, 0}), make_sphere(1.0, 0.5, {0, 0.52, 0}, {0, -3, 0}),
+                                        make_sphere(2.0, 0.5, {2.02, 0.5, 0}, {-4, 0, 0}), make_sphere(1.0, 0.5, {3.5, 0.5, 0})};
+    WorldSettings settings{0.01, {0, -9.81, 0}};
+    settings.contact_timing = ContactTiming::event;
+    World stepped(bodies, settings, kick_and_push);
+    World staged(bodies, settings, kick_and_push);
+
+    std::size_t contacts = 0;
+    for (int i = 0; i < 5; ++i) {
+        stepped.step();
+        contacts += stepped.contacts().size();
+        staged.integrate_impact_to_impact();
+        staged.detect();
+        staged.respond();
+        staged.correct();
+        staged.keep_answered_impacts();
+        REQUIRE(staged.contacts().size() == stepped.contacts().size());
+        for (std::size_t c = 0; c < stepped.contacts().size(); ++c) {
+            CHECK(staged.contacts()[c].body1 == stepped.contacts()[c].body1);
+            CHECK(staged.contacts()[c].body2 == stepped.contacts()[c].body2);
+        }
+        CHECK(staged.probes().response_energy_change == stepped.probes().response_energy_change);
+    }
+    CHECK(contacts > 0);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        CAPTURE(i);
+        CHECK(staged.bodies()[i].position == stepped.bodies()[i].position);
+        CHECK(staged.bodies()[i].velocity == stepped.bodies()[i].velocity);
+    }
+}
+
 TEST_CASE("each stage does its own part and nothing more", "[world][stages]") {
     // A ball sunk 0.25 into the ground (index 0), falling at 1 m/s, no gravity.
     World world({make_immovable_plane({0, 1, 0}, {0, 0, 0}), make_sphere(1.0, 0.5, {0, 0.25, 0}, {0, -1, 0})},

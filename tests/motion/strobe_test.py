@@ -68,12 +68,13 @@ def main():
         upside = motion.choose_view(motion.Scene(scenes_dir / "clay-drop.json", spec), [loaded["clay-drop"][1]])
         check((upside.v, upside.sign_v) == (2, -1.0), f"gravity +z should give up = -z, got {vars(upside)}")
 
-        # Boxes (chapter 4) are drawn by their orientation: the outline of the projected corners.
+        # Boxes (chapter 4) are drawn by their axes (as the simulator writes them): the outline of
+        # the projected corners. A box turned by `angle` about z has these axes.
         box_body = {"shape": {"type": "box", "half_extents": [1.0, 0.5, 0.25]}}
         top = motion.View(0, 1, "top view")
         for angle, half_x, half_y in ((0.0, 1.0, 0.5), (90.0, 0.5, 1.0), (45.0, 1.5 / math.sqrt(2), 1.5 / math.sqrt(2))):
-            half = math.radians(angle) / 2
-            shape = motion.outline(box_body, [2.0, 3.0, 0.0], [math.cos(half), 0.0, 0.0, math.sin(half)], top)
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            shape = motion.outline(box_body, [2.0, 3.0, 0.0], [[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]], top)
             x0, x1, y0, y1 = motion.extent_of([shape])
             corners = len(shape[1])
             check(shape[0] == "polygon" and corners == 4, f"box at {angle} degrees: {corners} corners, expected 4")
@@ -99,8 +100,8 @@ def main():
                 k = trajectory.index_at(t)
                 where = strobe.view_at(view, pitch, scene.duration, t, count)
                 for i in motion.movable(scene):
-                    position, q, _ = trajectory.states[k][i]
-                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, q, where)])
+                    position, axes, _ = trajectory.states[k][i]
+                    x0, x1, y0, y1 = motion.extent_of([motion.outline(scene.bodies[i], position, axes, where)])
                     check(box[0] < x0 and x1 < box[1] and box[2] < y0 and y1 < box[3],
                           f"{name}: body {i} at frame {k} ({x0}..{x1}, {y0}..{y1}) leaves the box {box}")
 
@@ -118,8 +119,8 @@ def main():
         view = motion.choose_view(scene, [trajectory])
         for t in (0.02, 0.05, 0.08):
             k = trajectory.index_at(t)
-            position, q, _ = trajectory.states[k][0]
-            (cx, cy), (hx, hy) = motion.box_hands(scene.bodies[0], position, q, view)[0]
+            position, axes, _ = trajectory.states[k][0]
+            (cx, cy), (hx, hy) = motion.box_hands(scene.bodies[0], position, axes, view)[0]
             turned = math.atan2(hy - cy, hx - cx)
             check(abs(turned - 5.0 * trajectory.times[k]) < 1e-9 * 5.0 * trajectory.times[k] + 1e-12,
                   f"spinning cube at t = {trajectory.times[k]} s: +x hand at {turned} rad, expected {5.0 * trajectory.times[k]}")

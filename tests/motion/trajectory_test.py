@@ -28,7 +28,7 @@ from pathlib import Path
 
 from plots import motion  # run from the workbook's folder (ctest does)
 
-TRAJECTORY_HEADER = "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz"
+TRAJECTORY_HEADER = "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,ex_x,ex_y,ex_z,ey_x,ey_y,ey_z,ez_x,ez_y,ez_z"
 CONTACTS_HEADER = "frame,t,body1,body2,point,x,y,z,nx,ny,nz,depth,impulse"
 STRIDE = 7
 
@@ -97,6 +97,16 @@ def check_scene(sim, scene, scratch, sanitized=False):
     frames = sorted({int(r["frame"]) for r in bodies})
     check(frames == list(range(steps + 1)), f"{name}: stride 1 should record frames 0..{steps}")
     check(len(bodies) == count * (steps + 1), f"{name}: {len(bodies)} rows, expected {count * (steps + 1)}")
+
+    # The body's own axes (what the pictures draw with): unit, at right angles, right-handed
+    # (x cross y is z), to rounding, in every row.
+    for row in bodies[:: max(1, len(bodies) // 200)]:
+        ex, ey, ez = ([float(row[f"e{a}_{c}"]) for c in "xyz"] for a in "xyz")
+        cross = [ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0]]
+        dots = [sum(a * b for a, b in zip(u, v)) for u, v in ((ex, ex), (ey, ey), (ez, ez), (ex, ey), (ey, ez), (ez, ex))]
+        check(all(abs(d - (1.0 if k < 3 else 0.0)) <= 1e-12 for k, d in enumerate(dots)) and
+              all(abs(a - b) <= 1e-12 for a, b in zip(cross, ez)),
+              f"{name}: body {row['body']} at frame {row['frame']}: axes {ex}, {ey}, {ez} are not a rotation")
 
     # First frame: the scene file.
     for i, body in enumerate(spec["bodies"]):

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "workbook/quaternion.hpp"
 #include "workbook/time_series.hpp"
 #include "workbook/world.hpp"
 
@@ -54,7 +55,14 @@ void write_frame(std::ostream& out, std::size_t step, const World& world, const 
             << b.position.x << ',' << b.position.y << ',' << b.position.z << ',' << b.orientation.w << ','
             << b.orientation.x << ',' << b.orientation.y << ',' << b.orientation.z << ',' << b.velocity.x << ','
             << b.velocity.y << ',' << b.velocity.z << ',' << b.angular_velocity.x << ',' << b.angular_velocity.y
-            << ',' << b.angular_velocity.z << '\n';
+            << ',' << b.angular_velocity.z;
+        // The body's own axes in the world frame (the columns of its rotation matrix, the
+        // engine's to_matrix()): what the pictures need to draw a box's corners and axes, a
+        // plane's trace and a spin in the body frame, so that plots/ has no geometry of its own.
+        const Matrix3 axes = to_matrix(b.orientation);
+        for (int column = 0; column < 3; ++column)
+            out << ',' << axes(0, column) << ',' << axes(1, column) << ',' << axes(2, column);
+        out << '\n';
     }
 }
 
@@ -105,7 +113,7 @@ private:
 }  // namespace
 
 const char* trajectory_header() {
-    return "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
+    return "frame,t,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,ex_x,ex_y,ex_z,ey_x,ey_y,ey_z,ez_x,ez_y,ez_z";
 }
 
 const char* contacts_header() {

@@ -22,6 +22,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "workbook/broad_phase.hpp"
@@ -30,8 +32,8 @@
 
 namespace workbook {
 
-class World;
 enum class Integrator : std::uint8_t;
+struct ResponseModel;
 
 /// k in x(tau) = x + v tau + k g tau^2 for `integrator` (see the file comment).
 double gravity_position_factor(Integrator integrator);
@@ -52,14 +54,20 @@ struct ImpactEvent {
     std::uint32_t events_j;            ///< body j's event count when it was predicted
 };
 
-/// What World::step_with_event_timing() keeps between steps, so that a warm step allocates nothing.
+/// Where a sphere ends a step under event timing (radius -1 for a body that is not a sphere).
+struct SphereEnd {
+    Vector3 centre;   ///< m
+    double radius;    ///< m
+};
+
+/// What move_impact_to_impact() keeps between steps, so that a warm step allocates nothing.
 struct EventScratch {
     std::vector<double> since;             ///< per body: the time within the step its state refers to, s
     std::vector<double> reach;             ///< per body: how far it may move this step, m
     std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
     ProxySet proxies;                      ///< the bodies at the start of the step, widened by their reach
     BroadPhase broad_phase;                ///< finds the candidates once per step
-    std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap
+    std::vector<BodyPair> pairs;           ///< candidates: widened bounding spheres overlap (in no order)
     std::vector<std::uint32_t> start;      ///< per body, into partners (a counting sort of pairs)
     std::vector<std::uint32_t> partners;   ///< each body's candidate partners, body after body
     std::vector<BodyPair> extra;           ///< candidates found later, for a body that outran its reach
@@ -72,18 +80,51 @@ struct EventScratch {
     };
     std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
-    std::vector<BodyPair> all_pairs;       ///< candidates and extras, sorted, for the back-stop
+    /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
+    std::vector<SphereEnd> ends;
+    std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
     std::vector<ImpactEvent> heap;         ///< pending events, earliest (then smallest pair) first
     std::vector<Contact> contacts;         ///< the contacts answered at their moment this step
 };
 
-// One step of `world` with event-accurate timing. After the last event the discrete stages
-// run once on what still overlaps (deep initial overlaps, resting contacts), so nothing is
-// left unanswered. A step handles at most a bounded number of events (two per body, and at
-// most max_events_per_body for any one body), after which the rest of it is discrete: a ball
-// coming to rest on the ground bounces infinitely often in a finite time, and no event loop
-// can follow that.
-// (World::step_with_event_timing(), run by World::step() under event timing.)
+/// How bodies move between impacts over one step: x(tau) = x + v tau + k g tau^2 (the file comment).
+struct EventMotion {
+    Vector3 gravity;  ///< m/s^2
+    double k;         ///< gravity_position_factor() of the world's integrator
+    double dt;        ///< the step, s
+};
+
+/// Whether and how a stage checks the bodies for non-finite numbers (guards.hpp).
+struct FiniteCheck {
+    bool on = true;                        ///< the world's check_finite setting
+    std::span<const std::string> names;    ///< the bodies' names, or empty
+    std::uint64_t step = 0;                ///< the step being taken, 1 for the first
+};
+
+/// What move_impact_to_impact() leaves for the rest of the step.
+struct ImpactsAnswered {
+    double energy_change = 0.0;            ///< kinetic energy the responses at impacts changed, J
+    /// Every pair that overlaps at the end of the step, each once, sorted by (first, second),
+    /// found among the pairs whose bodies came near each other (a view of the scratch, valid
+    /// until the next step).
+    std::span<const BodyPair> overlapping_pairs;
+    bool used_grid = false;                ///< the candidates were found with a grid
+};
+
+/// Stage 1 of a step under event timing: moves `bodies` from impact to impact within the step,
+/// answering each impact at its moment with the model's responder (the contacts answered are
+/// left in scratch.contacts, in order), then every body to the end of the step. What still
+/// overlaps then (deep initial overlaps, resting contacts, pairs left out of the event loop)
+/// is the discrete stages' to answer, among ImpactsAnswered::overlapping_pairs. A step handles at
+/// most a bounded number of events (two per body, and at most max_events_per_body for any one
+/// body), after which the rest of it is discrete: a ball coming to rest on the ground bounces
+/// infinitely often in a finite time, and no event loop can follow that.
+ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMotion& motion, const ResponseModel& model,
+                                      const FiniteCheck& check, EventScratch& scratch);
+
+/// The same without a responder: nothing changes at an impact, so the bodies pass as the
+/// discrete loop would and there are no events to follow; each moves the whole step.
+void advance_whole_step(std::span<RigidBody> bodies, const EventMotion& motion);
 
 /// The most events one body takes part in within a step; after that its contacts are left to
 /// the discrete back-stop (a resting pile would otherwise spend the whole budget on bounces

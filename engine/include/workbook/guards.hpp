@@ -35,6 +35,16 @@ private:
     std::string stage_;
 };
 
+/// 0 when every number the guard checks in `body` is finite, NaN otherwise: x * 0 is 0 for a
+/// finite x and NaN for a NaN or an infinity (and a sum too large to represent gives a NaN
+/// as well, which only sends the guard to look at every body, where it finds nothing). A
+/// stage sums it over the bodies it changed and calls check_finite() only when the sum is not 0.
+inline double poison(const RigidBody& b) {
+    return (b.position.x + b.position.y + b.position.z + b.velocity.x + b.velocity.y + b.velocity.z + b.orientation.w +
+            b.orientation.x + b.orientation.y + b.orientation.z + b.angular_velocity.x + b.angular_velocity.y +
+            b.angular_velocity.z) * 0.0;
+}
+
 /// The first non-finite quantity of `body` ("position", "velocity", "orientation",
 /// "angular_velocity"), or nothing when every number is finite.
 std::optional<std::string> first_non_finite(const RigidBody& body);

@@ -6,6 +6,7 @@
 /// thin body between two steps (docs/scene-format.md says so where scenes are described).
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "workbook/contact.hpp"
@@ -15,7 +16,8 @@
 
 namespace workbook {
 
-class World;
+class BroadPhase;
+struct ProxySet;
 
 /// Where `body` started the step, undoing what integrate() did: x_end - v_end dt + g c dt^2, with
 /// `gravity_term` = g c dt^2 and c = 1 - k (0 for semi-implicit Euler, 1/2 for
@@ -53,7 +55,7 @@ inline bool spheres_may_touch(const Vector3& a1, const Vector3& a0, double ra, c
     return far - approach * approach <= rr * uu + slack * far;
 }
 
-/// What World::sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
+/// What sweep_fast_spheres() keeps between steps, so that a warm step allocates nothing.
 struct SweepScratch {
     std::vector<Vector3> starts;         ///< without the grid: where each body started the step
     std::vector<std::uint32_t> moved;    ///< spheres moved back this step, in index order
@@ -63,14 +65,24 @@ struct SweepScratch {
     std::vector<std::uint32_t> boxes;    ///< the boxes, which the swept test's partners leave out
 };
 
-// After detect(): every sphere that moved further than the smallest radius in the world is
-// traced from where it started the step to where it ended, in index order; if it went through
-// another sphere or a box, or its centre ended behind a plane, it goes back to the moment of touching
-// and its contacts are detected again there, plus that touch unless the partner overlaps it
-// there (see swept_spheres.cpp for why). A sphere moved back keeps its start: later spheres
-// are traced against the part of its path it did travel. With the grid of this step's
-// detect(), only the candidates the broad phase found are tried, with the same result as
-// trying every body.
-// (World::sweep_fast_spheres(), a private stage of World::detect().)
+/// The grid of this step's detect(), when it used one with a swept set: its proxies (the
+/// swept test moves a sphere's proxy with the sphere) and the broad phase that found the swept
+/// test's partners. Both null without a grid.
+struct SweepGrid {
+    ProxySet* proxies = nullptr;
+    const BroadPhase* broad_phase = nullptr;
+};
+
+/// The swept test, after detect() has filled `contacts`: every sphere that moved further than
+/// the smallest radius in the world is traced from where it started the step to where it
+/// ended, in index order; if it went through another sphere or a box, or its centre ended
+/// behind a plane, it goes back to the moment of touching and its contacts are detected again
+/// there, plus that touch unless the partner overlaps it there (see swept_spheres.cpp for why).
+/// A sphere moved back keeps its start: later spheres are traced against the part of its path
+/// it did travel. With the grid, only the candidates the broad phase found are tried, with the
+/// same result as trying every body. `dt` and `gravity_term` give each body's start without a
+/// grid (start_of_step()). scratch.moved lists the spheres moved back.
+void sweep_fast_spheres(std::span<RigidBody> bodies, double dt, const Vector3& gravity_term, const SweepGrid& grid,
+                        std::vector<Contact>& contacts, SweepScratch& scratch);
 
 }  // namespace workbook

@@ -106,6 +106,10 @@ struct StageUse {
 ///
 /// A model with a contact solver (chapter 5) replaces stages 3 and 4 by one,
 /// solve_contacts(): every contact of the step solved together, velocities then overlap.
+/// Under event timing, integrate_impact_to_impact() replaces stage 1 (the bodies move from
+/// impact to impact, each answered at its moment), detect() looks only among the pairs that
+/// came near, and keep_answered_impacts() ends the step. step() calls exactly these public
+/// stages, so that bench/stages.cpp times what a step runs.
 ///
 /// Storage is sized when the world is built; after the first step no stage allocates.
 class World {
@@ -115,19 +119,28 @@ public:
 
     /// Runs the four stages once, in order, and advances the clock: exactly integrate(),
     /// detect(), respond(), correct() (a test holds it to that, state hash for state hash).
-    /// Under event timing the bodies instead move from impact to impact within the step, each
-    /// answered at its moment (event_timing.hpp), and the same detection, response and
-    /// correction then answer what still overlaps.
+    /// Under event timing, integrate_impact_to_impact() takes integrate()'s place: the bodies
+    /// move from impact to impact within the step, each answered at its moment
+    /// (event_timing.hpp); the same detect(), respond() and correct() then answer what still
+    /// overlaps, and keep_answered_impacts() puts the impacts' contacts first.
     void step();
 
     /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
     /// broad phase's proxies in the same pass, for the detect() that follows.
     void integrate();
     /// Stage 2: fills contacts() with every overlapping pair, then (discrete timing, swept
-    /// spheres on) traces each fast sphere along its path (swept_spheres.hpp).
+    /// spheres on) traces each fast sphere along its path (swept_spheres.hpp). Right after
+    /// integrate_impact_to_impact(), only the pairs whose bodies came near each other are tried.
     void detect();
     void respond();    ///< stage 3: the model's velocity responder, once per contact
     void correct();    ///< stage 4: the model's position corrector, once per contact
+    /// Stage 1 under event timing: the bodies move from impact to impact within the step, each
+    /// impact answered at its moment by the model's responder (move_impact_to_impact(),
+    /// event_timing.hpp); the detect() that follows looks only among the pairs that came near.
+    void integrate_impact_to_impact();
+    /// Last under event timing: the impacts answered in integrate_impact_to_impact() go first in
+    /// contacts(), and the energy they changed joins response_energy_change.
+    void keep_answered_impacts();
     /// Stages 3 and 4 for a model with a contact solver: all contacts of the step together.
     void solve_contacts();
     /// What the last solve_contacts() did (all zero for models without a contact solver).
@@ -146,6 +159,7 @@ public:
     /// The bodies, writable (for tests and tools); the next detect() then gathers them afresh.
     [[nodiscard]] std::span<RigidBody> bodies() {
         proxies_fresh_ = false;
+        impacts_fresh_ = false;
         return bodies_;
     }
     /// The contacts found by the last detect().
@@ -172,10 +186,6 @@ public:
     [[nodiscard]] std::uint64_t steps_taken() const { return steps_; }
 
 private:
-    /// Under event timing, the whole step (event_timing.cpp; see workbook/event_timing.hpp).
-    void step_with_event_timing();
-    /// Part of detect(): the swept test of fast spheres (swept_spheres.cpp; see workbook/swept_spheres.hpp).
-    void sweep_fast_spheres();
     /// Throws NonFiniteState naming `stage` when check_finite is on and a body is not finite.
     void guard(const char* stage) const;
     /// Appends the contact of bodies i < j when they overlap (never for two immovable ones).
@@ -209,6 +219,10 @@ private:
     bool proxies_fresh_ = false;
     SweepScratch sweep_scratch_;
     EventScratch event_scratch_;
+    /// What the last integrate_impact_to_impact() left for the rest of the step.
+    ImpactsAnswered impacts_;
+    /// True from an integrate_impact_to_impact() that followed impacts to the detect() after it.
+    bool impacts_fresh_ = false;
     Shortcuts shortcuts_;
     bool used_broad_phase_ = false;
     WorldSettings settings_;
