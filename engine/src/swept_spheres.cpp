@@ -203,8 +203,7 @@ void World::sweep_fast_spheres() {
 
         // The fast sphere goes back to the moment of touching, and the contacts found for it at
         // the end of the step give way to the one found on the way. Its partner keeps its place
-        // and its other contacts (taking those away would let a resting body sink); the normal
-        // is taken where both were at that moment.
+        // and its other contacts (taking those away would let a resting body sink).
         RigidBody& fast = bodies[i];
         const double earliest = touch.fraction;
         const RigidBody& other = bodies[touch.partner];
@@ -221,16 +220,23 @@ void World::sweep_fast_spheres() {
         const bool plane = other.shape.kind == ShapeKind::plane;
         contact.body1 = i;
         contact.body2 = touch.partner;
+        // The normal and the point are those of the two bodies where the step leaves them (the
+        // fast sphere moved back, the partner at its end), as detection would write them: the
+        // responders take lever arms from the bodies' centres as they stand. Taken where the
+        // partner was at the moment of touching, a partner that moved on since got a lever arm
+        // across the normal, and the impulse of a frictionless ball spun it (up to 21 rad/s in
+        // a pile). Only when the partner's centre is where the fast sphere's is does the
+        // normal come from the moment of touching.
         if (plane) {
             contact.normal = rotate(other.orientation, other.shape.normal);
-        } else if (other.shape.kind == ShapeKind::box) {
-            const Vector3 offset = fast.position - nearest_point_on_box(other, other_then, fast.position);
-            const double distance = length(offset);
-            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
         } else {
-            const Vector3 offset = fast.position - other_then;
-            const double distance = length(offset);
-            contact.normal = distance > 0.0 ? offset / distance : coincident_centres_normal;
+            const bool box = other.shape.kind == ShapeKind::box;
+            const Vector3 offset = fast.position - (box ? nearest_point_on_box(other, other.position, fast.position) : other.position);
+            const Vector3 then = fast.position - (box ? nearest_point_on_box(other, other_then, fast.position) : other_then);
+            const double distance = length(offset), distance_then = length(then);
+            contact.normal = distance > 0.0        ? offset / distance
+                             : distance_then > 0.0 ? then / distance_then
+                                                   : coincident_centres_normal;
         }
         contact.add_point(fast.position - contact.normal * fast.shape.radius, 0.0);
         scratch.found.push_back(contact);  // the pair was not among the contacts: it did not overlap at the end
