@@ -366,7 +366,7 @@ PositionCorrection read_position_correction(const Reader& root) {
 /// The contact solver's knobs (chapter 5): whole numbers of passes, warm starting, friction.
 ContactSolverSettings read_contact_solver(const Reader& root) {
     const Reader knobs(root.required("contact_solver"), "contact_solver", root.file());
-    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "friction", "tolerance", "bounce_threshold"});
+    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "friction", "tolerance", "bounce_threshold", "sleeping"});
     ContactSolverSettings result;
     auto passes = [&](const char* key, int fallback) {
         const double v = knobs.number_or(key, fallback);
@@ -377,6 +377,7 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
     result.velocity_iterations = passes("velocity_iterations", result.velocity_iterations);
     result.position_iterations = passes("position_iterations", result.position_iterations);
     result.warm_start = knobs.boolean_or("warm_start", result.warm_start);
+    result.sleeping = knobs.boolean_or("sleeping", result.sleeping);
     result.friction = knobs.number_or("friction", result.friction);
     if (result.friction < 0.0) knobs.fail(knobs.field("friction"), "must be zero or positive, got " + Reader::format(result.friction));
     result.tolerance = knobs.number_or("tolerance", result.tolerance);

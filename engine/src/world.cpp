@@ -126,6 +126,8 @@ double World::integrate_bodies(bool gather, bool swept) {
             // Kinematic bodies move at their own constant velocity and spin; gravity and
             // contacts never change them (immovable ones have neither, and stay put).
             advance_kinematic(body, dt);
+        } else if (sleeping_.asleep(i)) {
+            // A sleeping body stays where it is, at rest (workbook/sleeping.hpp).
         } else {
             if (semi_implicit) {
                 if (gravity) body.velocity += gravity_kick;
@@ -289,8 +291,30 @@ void World::solve_contacts() {
     double before = 0.0;
     if (probe)
         for (const RigidBody& body : bodies_) before += kinetic_energy(body);
-    solver_report_ = contact_solver_.solve(bodies_, contacts_, *model_.contact_solver, settings_.contact_solver,
-                                           settings_.position_correction, settings_.time_step, -settings_.gravity);
+    const ContactSolverSettings& solver = settings_.contact_solver;
+    contact_solver_.reserve(contacts_.capacity());
+    std::span<const Contact> solved = contacts_;
+    if (solver.sleeping) {
+        // Sized with the contacts, in the steps where they grow: a warm step allocates nothing.
+        if (awake_contacts_.capacity() < contacts_.capacity()) awake_contacts_.reserve(contacts_.capacity());
+        sleeping_.wake_touched(bodies_, contacts_);
+        if (sleeping_.sleeping() > 0) {
+            // A sleeping island's contacts are left out (an awake body's contact with a
+            // sleeping one woke it above); those with the ground or a wall of a sleeping body too.
+            awake_contacts_.clear();
+            for (const Contact& contact : contacts_) {
+                const RigidBody& body1 = bodies_[contact.body1];
+                const RigidBody& body2 = bodies_[contact.body2];
+                if ((!body1.is_immovable() && !sleeping_.asleep(contact.body1)) ||
+                    (!body2.is_immovable() && !sleeping_.asleep(contact.body2)))
+                    awake_contacts_.push_back(contact);
+            }
+            solved = awake_contacts_;
+        }
+    }
+    solver_report_ = contact_solver_.solve(bodies_, solved, *model_.contact_solver, solver, settings_.position_correction,
+                                           settings_.time_step, -settings_.gravity);
+    if (solver.sleeping) sleeping_.fall_asleep(bodies_, solver, settings_.time_step);
     double after = 0.0;
     double sum = 0.0;
     for (const RigidBody& body : bodies_) {

@@ -393,6 +393,7 @@ TEST_CASE("the contact solver's knobs are checked", "[scene][errors]") {
     CHECK(problem(R"({"velocity_iterations": 2.5})") == "contact_solver.velocity_iterations: must be a whole number from 0 to 10000, got 2.5");
     CHECK(problem(R"({"friction": -1})") == "contact_solver.friction: must be zero or positive, got -1");
     CHECK(problem(R"({"warm_start": 1})") == "contact_solver.warm_start: must be true or false, got the number 1");
+    CHECK(problem(R"({"sleeping": "no"})").starts_with("contact_solver.sleeping: must be true or false"));
     CHECK(problem(R"({"iterations": 5})").starts_with("contact_solver.iterations: unknown key"));
     CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false, "friction": 0.5})") == "no error");
 }
