@@ -395,11 +395,16 @@ std::vector<StageUse> World::plan() const {
     stages.push_back({"detect: swept test", swept, why});
     if (model_.contact_solver != nullptr) {
         const ContactSolverSettings& solver = settings_.contact_solver;
+        char still[32];
+        std::snprintf(still, sizeof still, "%g", solver.sleep_time);
+        const std::string sleeping = solver.sleeping ? std::string("; islands still for ") + still + " s sleep until touched"
+                                                     : std::string("; sleeping off");
         stages.push_back({"solve contacts", true,
                           "responder '" + std::string(model_.name) + "': all contacts together, up to " +
                               std::to_string(solver.velocity_iterations) + " velocity and " +
                               std::to_string(solver.position_iterations) + " position passes" +
-                              (solver.warm_start ? ", warm started" : ", not warm started")});
+                              (solver.warm_start ? ", warm started" : ", not warm started") +
+                              sleeping});
         return stages;
     }
     stages.push_back({"respond", model_.respond != nullptr,
