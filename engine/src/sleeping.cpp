@@ -88,6 +88,13 @@ void Sleeping::fall_asleep(std::span<RigidBody> bodies, const ContactSolverSetti
     }
 }
 
+void Sleeping::wake(std::size_t i) {
+    if (!asleep(i)) return;
+    asleep_[i] = 0;
+    still_[i] = 0.0;
+    --sleeping_;
+}
+
 void Sleeping::wake_all() {
     std::fill(asleep_.begin(), asleep_.end(), std::uint8_t{0});
     std::fill(still_.begin(), still_.end(), 0.0);

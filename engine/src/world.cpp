@@ -126,9 +126,11 @@ double World::integrate_bodies(bool gather, bool swept) {
             // Kinematic bodies move at their own constant velocity and spin; gravity and
             // contacts never change them (immovable ones have neither, and stay put).
             advance_kinematic(body, dt);
-        } else if (sleeping_.asleep(i)) {
-            // A sleeping body stays where it is, at rest (workbook/sleeping.hpp).
+        } else if (sleeping_.asleep(i) && body.velocity == Vector3{} && body.angular_velocity == Vector3{}) {
+            // A sleeping body stays where it is, at rest (workbook/sleeping.hpp); one that a
+            // tool or test has given a velocity (through bodies()) wakes, and its island with it.
         } else {
+            sleeping_.wake(i);
             if (semi_implicit) {
                 if (gravity) body.velocity += gravity_kick;
                 body.position += body.velocity * dt;

@@ -112,6 +112,16 @@ TEST_CASE("A resting column falls asleep: exactly at rest, its contacts no longe
     }
     CHECK(world.contact_solver().impulses().empty());
     CHECK(world.contacts().size() == 5);  // still detected, to wake the column when touched
+    // A velocity given to a sleeping ball from outside (a tool, a test) wakes it, and, pressed
+    // into the ball below, the whole column; lifted clear of it, the others sleep on.
+    world.bodies()[4].velocity = {0, 0.6, 0};
+    world.step();
+    CHECK(!world.sleeping().asleep(4));
+    CHECK(world.sleeping().sleeping() == 4);
+    CHECK(world.bodies()[4].position.y > asleep[4].y);
+    world.bodies()[4].velocity = {0, -1, 0};
+    for (int i = 0; i < 3 && world.sleeping().sleeping() > 0; ++i) world.step();
+    CHECK(world.sleeping().sleeping() == 0);
 }
 
 TEST_CASE("Sleeping off (ContactSolverSettings::sleeping): no body sleeps", "[engine][contact-solver][sleeping]") {

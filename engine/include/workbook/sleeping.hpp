@@ -39,6 +39,9 @@ public:
     /// island all of whose bodies have been still for `settings.sleep_time`.
     void fall_asleep(std::span<RigidBody> bodies, const ContactSolverSettings& settings, double dt);
 
+    /// Wakes body `i` (its island wakes at the next wake_touched()).
+    void wake(std::size_t i);
+
     /// Wakes every body.
     void wake_all();
 
