@@ -97,6 +97,16 @@ void ContactSolver::remember(std::span<const Contact> contacts) {
     std::swap(previous_, current_);
 }
 
+void ContactSolver::reserve(std::size_t contacts) {
+    if (impulses_.capacity() >= contacts) return;
+    impulses_.reserve(contacts);
+    adjusted_.reserve(contacts);
+    order_.reserve(contacts);
+    height_.reserve(contacts);
+    previous_.reserve(contacts);
+    current_.reserve(contacts);
+}
+
 ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
                                          const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
                                          const PositionCorrection& knobs, double dt, const Vector3& up) {

@@ -383,7 +383,7 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
         knobs.fail(knobs.field("friction"),
                    "is no longer a knob of the contact solver: give each body its own \"friction\" (the ground "
                    "too; a pair takes the geometric mean) and use the responder \"friction\"");
-    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "tolerance", "bounce_threshold"});
+    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "tolerance", "bounce_threshold", "sleeping"});
     ContactSolverSettings result;
     auto passes = [&](const char* key, int fallback) {
         const double v = knobs.number_or(key, fallback);
@@ -394,6 +394,7 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
     result.velocity_iterations = passes("velocity_iterations", result.velocity_iterations);
     result.position_iterations = passes("position_iterations", result.position_iterations);
     result.warm_start = knobs.boolean_or("warm_start", result.warm_start);
+    result.sleeping = knobs.boolean_or("sleeping", result.sleeping);
     result.tolerance = knobs.number_or("tolerance", result.tolerance);
     if (!(result.tolerance > 0.0)) knobs.fail(knobs.field("tolerance"), "must be positive, got " + Reader::format(result.tolerance));
     result.bounce_threshold = knobs.number_or("bounce_threshold", result.bounce_threshold);

@@ -110,6 +110,11 @@ Vector3 away_from(const Vector3& from, const Vector3& to) {
     return distance > 0.0 ? offset / distance : coincident_centres_normal;
 }
 
+/// away_from(now, to), unless `now` is no distance from `to`: then away_from(then, to).
+Vector3 normal_now_or_then(const Vector3& now, const Vector3& then, const Vector3& to) {
+    return length(to - now) > 0.0 ? away_from(now, to) : away_from(then, to);
+}
+
 /// The earliest touch of fast sphere i, and among equally early ones the partner of smallest
 /// index: what trying every body in index order finds, whatever order the candidates come in.
 struct EarliestTouch {
@@ -236,8 +241,7 @@ private:
 
     /// The fast sphere i goes back to the moment of touching, and the contacts found for it at
     /// the end of the step give way to the one found on the way (returned). Its partner keeps
-    /// its place and its other contacts (taking those away would let a resting body sink); the
-    /// normal is taken where both were at that moment.
+    /// its place and its other contacts (taking those away would let a resting body sink).
     Contact move_back(std::uint32_t i, const Vector3& fast_start, const EarliestTouch& touch) {
         RigidBody& fast = bodies_[i];
         const double earliest = touch.fraction;
@@ -254,12 +258,20 @@ private:
         Contact contact;
         contact.body1 = i;
         contact.body2 = touch.partner;
+        // The normal and the point are those of the two bodies where the step leaves them (the
+        // fast sphere moved back, the partner at its end), as detection would write them: the
+        // responders take lever arms from the bodies' centres as they stand. Taken where the
+        // partner was at the moment of touching, a partner that moved on since got a lever arm
+        // across the normal, and the impulse of a frictionless ball spun it (up to 21 rad/s in
+        // a pile). Only when the partner's centre is where the fast sphere's is does the normal
+        // come from the moment of touching.
         switch (pair_of(fast.shape.kind, other.shape.kind)) {
             case ShapePair::sphere_plane: contact.normal = rotate(other.orientation, other.shape.normal); break;
             case ShapePair::sphere_box:
-                contact.normal = away_from(nearest_point_on_box(other, other_then, fast.position), fast.position);
+                contact.normal = normal_now_or_then(nearest_point_on_box(other, other.position, fast.position),
+                                                    nearest_point_on_box(other, other_then, fast.position), fast.position);
                 break;
-            case ShapePair::sphere_sphere: contact.normal = away_from(other_then, fast.position); break;
+            case ShapePair::sphere_sphere: contact.normal = normal_now_or_then(other.position, other_then, fast.position); break;
             case ShapePair::plane_plane:
             case ShapePair::plane_box:
             case ShapePair::box_box: break;  // the fast body is a sphere

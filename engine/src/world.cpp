@@ -137,7 +137,11 @@ double World::integrate_bodies(bool gather, bool swept) {
             // Kinematic bodies move at their own constant velocity and spin; gravity and
             // contacts never change them (immovable ones have neither, and stay put).
             advance_kinematic(body, dt);
+        } else if (sleeping_.asleep(i) && body.velocity == Vector3{} && body.angular_velocity == Vector3{}) {
+            // A sleeping body stays where it is, at rest (workbook/sleeping.hpp); one that a
+            // tool or test has given a velocity (through bodies()) wakes, and its island with it.
         } else {
+            sleeping_.wake(i);
             if (semi_implicit) {
                 if (gravity) body.velocity += gravity_kick;
                 body.position += body.velocity * dt;
@@ -315,8 +319,30 @@ void World::solve_contacts() {
     double before = 0.0;
     if (probe)
         for (const RigidBody& body : bodies_) before += kinetic_energy(body);
-    solver_report_ = contact_solver_.solve(bodies_, contacts_, *model_.contact_solver, settings_.contact_solver,
-                                           settings_.position_correction, settings_.time_step, -settings_.gravity);
+    const ContactSolverSettings& solver = settings_.contact_solver;
+    contact_solver_.reserve(contacts_.capacity());
+    std::span<const Contact> solved = contacts_;
+    if (solver.sleeping) {
+        // Sized with the contacts, in the steps where they grow: a warm step allocates nothing.
+        if (awake_contacts_.capacity() < contacts_.capacity()) awake_contacts_.reserve(contacts_.capacity());
+        sleeping_.wake_touched(bodies_, contacts_);
+        if (sleeping_.sleeping() > 0) {
+            // A sleeping island's contacts are left out (an awake body's contact with a
+            // sleeping one woke it above); those with the ground or a wall of a sleeping body too.
+            awake_contacts_.clear();
+            for (const Contact& contact : contacts_) {
+                const RigidBody& body1 = bodies_[contact.body1];
+                const RigidBody& body2 = bodies_[contact.body2];
+                if ((!body1.is_immovable() && !sleeping_.asleep(contact.body1)) ||
+                    (!body2.is_immovable() && !sleeping_.asleep(contact.body2)))
+                    awake_contacts_.push_back(contact);
+            }
+            solved = awake_contacts_;
+        }
+    }
+    solver_report_ = contact_solver_.solve(bodies_, solved, *model_.contact_solver, solver, settings_.position_correction,
+                                           settings_.time_step, -settings_.gravity);
+    if (solver.sleeping) sleeping_.fall_asleep(bodies_, solver, settings_.time_step);
     double after = 0.0;
     double sum = 0.0;
     for (const RigidBody& body : bodies_) {
@@ -397,11 +423,16 @@ std::vector<StageUse> World::plan() const {
     stages.push_back({"detect: swept test", swept, why});
     if (model_.contact_solver != nullptr) {
         const ContactSolverSettings& solver = settings_.contact_solver;
+        char still[32];
+        std::snprintf(still, sizeof still, "%g", solver.sleep_time);
+        const std::string sleeping = solver.sleeping ? std::string("; islands still for ") + still + " s sleep until touched"
+                                                     : std::string("; sleeping off");
         stages.push_back({"solve contacts", true,
                           "responder '" + std::string(model_.name) + "': all contacts together, up to " +
                               std::to_string(solver.velocity_iterations) + " velocity and " +
                               std::to_string(solver.position_iterations) + " position passes" +
-                              (solver.warm_start ? ", warm started" : ", not warm started")});
+                              (solver.warm_start ? ", warm started" : ", not warm started") +
+                              sleeping});
         return stages;
     }
     stages.push_back({"respond", model_.respond != nullptr,

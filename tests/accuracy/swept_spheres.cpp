@@ -47,3 +47,34 @@ TEST_CASE("a sphere swept back into a place where it overlaps a third body is an
                           << ", " << third.position.y << ")");
     CHECK(length(fast.position - third.position) >= 2.0 * r * (1.0 - 1e-12));
 }
+
+TEST_CASE("the touching contact of a swept sphere and a partner that moved on pushes both through their centres",
+          "[accuracy][swept]") {
+    // A 0.1 m ball at 120 m/s (2 m per step of 1/60 s) passes under a 0.1 m ball moving up at
+    // 6 m/s: they touch about 0.48 of the way through the step, and at the end the slow ball is
+    // 0.25 m clear of the place the fast one goes back to, so the contact of that moment is
+    // the one answered. Frictionless balls: a push through both centres turns neither. With
+    // the normal taken where the slow ball was when they touched and the lever arm where it
+    // ended, the push spun both.
+    WorldSettings settings;
+    settings.time_step = 1.0 / 60.0;
+    const double r = 0.1;
+    for (const char* chapter : {"angular-impulse", "resting-contact"}) {
+        CAPTURE(chapter);
+        World world({make_sphere(1.0, r, {-1.0, 0, 0}, {120.0, 0, 0}), make_sphere(1.0, r, {0.0, 0.15, 0}, {0.0, 6.0, 0})},
+                    settings, accuracy::chapter_model(chapter));
+        world.step();
+        const RigidBody& fast = world.bodies()[0];
+        const RigidBody& slow = world.bodies()[1];
+        INFO("fast ball at (" << fast.position.x << ", " << fast.position.y << "), slow ball at (" << slow.position.x
+                              << ", " << slow.position.y << ")");
+        // It was answered: the slow ball got a push along x.
+        REQUIRE(slow.velocity.x > 0.1);
+        // Lever arms along the normal: a spin of rounding only, a few ulps of v / r = 1200 rad/s.
+        CHECK(length(fast.angular_velocity) <= 1e-12 * 120.0 / r);
+        CHECK(length(slow.angular_velocity) <= 1e-12 * 120.0 / r);
+        // Momentum is kept.
+        CHECK(std::abs(fast.velocity.x + slow.velocity.x - 120.0) <= 1e-12 * 120.0);
+        CHECK(std::abs(fast.velocity.y + slow.velocity.y - 6.0) <= 1e-12 * 120.0);
+    }
+}

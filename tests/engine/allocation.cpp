@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "elastic_impulse.hpp"
+#include "solver_doubles.hpp"
 #include "workbook/time_series.hpp"
 #include "workbook/world.hpp"
 
@@ -246,4 +247,32 @@ TEST_CASE("boxes too: box detection and the rotation step allocate nothing after
     }
     CHECK(allocated == 0);
     CHECK(points_seen >= 240);
+}
+
+TEST_CASE("the contact solver with sleeping allocates nothing once warm, through sleep and wake",
+          "[world][allocation][contact-solver][sleeping]") {
+    // A column of 5 balls, and a sixth dropped from 2 m onto it: the column falls asleep, the
+    // ball wakes it, and all six fall asleep again, all within the counted steps.
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    World world(std::move(bodies), settings, testing::solver_model);
+    world.step();
+    std::size_t most_asleep = 0, fewest_asleep_after = 6;
+    std::size_t allocated = 0;
+    {
+        const AllocationCounter counter;
+        for (int i = 0; i < 300; ++i) {
+            world.step();
+            most_asleep = std::max(most_asleep, world.sleeping().sleeping());
+            if (most_asleep == 5) fewest_asleep_after = std::min(fewest_asleep_after, world.sleeping().sleeping());
+        }
+        allocated = AllocationCounter::count();
+    }
+    CHECK(allocated == 0);
+    CHECK(fewest_asleep_after == 0);              // woken by the ball
+    CHECK(world.sleeping().sleeping() == 6);     // asleep again
 }

@@ -10,53 +10,13 @@
 #include "workbook/contact_solver.hpp"
 #include "workbook/probes.hpp"
 #include "workbook/world.hpp"
+#include "solver_doubles.hpp"
 
 using namespace workbook;
 
 namespace {
 
-double normal_velocity(const RigidBody& body1, const RigidBody& body2, const Contact& contact) {
-    return dot(body1.velocity - body2.velocity, contact.normal);
-}
-
-void prepare(const RigidBody& body1, const RigidBody& body2, const Contact& contact, ContactImpulses& impulses,
-             const ContactSolverSettings&, const PositionCorrection& knobs, double dt) {
-    PointImpulse& p = impulses.points[0];
-    const double k = body1.inverse_mass + body2.inverse_mass;
-    p.mass = k > 0.0 ? 1.0 / k : 0.0;
-    p.bounce = 0.0;
-    p.bias = knobs.fraction * std::max(contact.penetration - knobs.slop, 0.0) / dt;
-    p.pseudo = 0.0;
-}
-
-void push(RigidBody& body1, RigidBody& body2, const Contact& contact, double j) {
-    body1.velocity += contact.normal * (j * body1.inverse_mass);
-    body2.velocity -= contact.normal * (j * body2.inverse_mass);
-}
-
-void warm_start(RigidBody& body1, RigidBody& body2, const Contact& contact, const ContactImpulses& impulses) {
-    push(body1, body2, contact, impulses.points[0].normal);
-}
-
-double pass(RigidBody& body1, RigidBody& body2, const Contact& contact, double target, double& sum, double mass) {
-    const double before = sum;
-    sum = std::max(before + mass * (target - normal_velocity(body1, body2, contact)), 0.0);
-    push(body1, body2, contact, sum - before);
-    return mass > 0.0 ? std::abs(sum - before) / mass : 0.0;
-}
-
-double solve_velocity(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
-    PointImpulse& p = impulses.points[0];
-    return pass(body1, body2, contact, p.bounce, p.normal, p.mass);
-}
-
-double solve_position(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses) {
-    PointImpulse& p = impulses.points[0];
-    return pass(body1, body2, contact, p.bias, p.pseudo, p.mass);
-}
-
-constexpr ContactSolverHooks hooks{&prepare, &warm_start, &solve_velocity, nullptr, &solve_position};
-constexpr ResponseModel model{"test-solver", nullptr, nullptr, &hooks};
+const ResponseModel& model = testing::solver_model;
 
 /// A column of `count` balls of 1 kg and radius 0.05 m standing on the ground, each touching
 /// the next, at rest.
@@ -120,4 +80,80 @@ TEST_CASE("A solver responder needs discrete timing", "[engine][contact-solver]"
     WorldSettings settings{1.0 / 60, {}};
     settings.contact_timing = ContactTiming::event;
     CHECK_THROWS_AS(World({make_sphere(1.0, 0.05, {})}, settings, model), std::invalid_argument);
+}
+
+namespace {
+
+/// A column of 5 resting balls and, `drop_height` m above the ground, one more ball falling
+/// onto it.
+World column_and_falling_ball(double drop_height, const ContactSolverSettings& solver) {
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+    bodies.push_back(make_sphere(1.0, 0.05, {0, drop_height, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver = solver;
+    return World(std::move(bodies), settings, model);
+}
+
+}  // namespace
+
+TEST_CASE("A resting column falls asleep: exactly at rest, its contacts no longer solved", "[engine][contact-solver][sleeping]") {
+    World world = column(5, {});
+    for (int i = 0; i < 120 && world.sleeping().sleeping() < 5; ++i) world.step();
+    REQUIRE(world.sleeping().sleeping() == 5);
+    std::vector<Vector3> asleep;
+    for (const RigidBody& body : world.bodies()) asleep.push_back(body.position);
+    for (int i = 0; i < 60; ++i) world.step();
+    for (std::size_t b = 0; b < asleep.size(); ++b) {
+        CHECK(world.bodies()[b].position == asleep[b]);
+        CHECK(world.bodies()[b].velocity == Vector3{});
+    }
+    CHECK(world.contact_solver().impulses().empty());
+    CHECK(world.contacts().size() == 5);  // still detected, to wake the column when touched
+    // A velocity given to a sleeping ball from outside (a tool, a test) wakes it, and, pressed
+    // into the ball below, the whole column; lifted clear of it, the others sleep on.
+    world.bodies()[4].velocity = {0, 0.6, 0};
+    world.step();
+    CHECK(!world.sleeping().asleep(4));
+    CHECK(world.sleeping().sleeping() == 4);
+    CHECK(world.bodies()[4].position.y > asleep[4].y);
+    world.bodies()[4].velocity = {0, -1, 0};
+    for (int i = 0; i < 3 && world.sleeping().sleeping() > 0; ++i) world.step();
+    CHECK(world.sleeping().sleeping() == 0);
+}
+
+TEST_CASE("Sleeping off (ContactSolverSettings::sleeping): no body sleeps", "[engine][contact-solver][sleeping]") {
+    World world = column(5, {.sleeping = false});
+    for (int i = 0; i < 120; ++i) world.step();
+    CHECK(world.sleeping().sleeping() == 0);
+    CHECK(world.contact_solver().impulses().size() == 5);
+}
+
+TEST_CASE("A sleeping column wakes when a falling ball hits it, and the six balls fall asleep again",
+          "[engine][contact-solver][sleeping]") {
+    // The column sleeps within a second; the ball dropped from 6 m lands on it after about 1.1 s.
+    World world = column_and_falling_ball(6.0, {});
+    const RigidBody& ball = world.bodies()[5];
+    int step = 0;
+    for (; step < 600 && world.sleeping().sleeping() < 5; ++step) world.step();
+    REQUIRE(world.sleeping().sleeping() == 5);
+    REQUIRE(!world.sleeping().asleep(5));
+    REQUIRE(ball.position.y > 1.0);  // still falling, far above the column
+    // Step until the ball touches the column: the step it does, the column is awake again and
+    // its top ball carries the blow.
+    bool touched = false;
+    for (; step < 600 && !touched; ++step) {
+        world.step();
+        for (const Contact& contact : world.contacts()) touched = touched || contact.body1 == 5 || contact.body2 == 5;
+    }
+    REQUIRE(touched);
+    CHECK(world.sleeping().sleeping() == 0);
+    CHECK(world.contact_solver().impulses().size() >= 6);
+    // Then all six rest and sleep, the dropped ball on top of the column.
+    for (; step < 1200 && world.sleeping().sleeping() < 6; ++step) world.step();
+    CHECK(world.sleeping().sleeping() == 6);
+    CHECK(std::abs(ball.position.y - world.bodies()[4].position.y - 0.1) <= 0.002);
+    CHECK(world.probes().kinetic() == 0.0);
 }

@@ -410,6 +410,7 @@ TEST_CASE("the contact solver's knobs are checked", "[scene][errors]") {
           "contact_solver.friction: is no longer a knob of the contact solver: give each body its own \"friction\" (the "
           "ground too; a pair takes the geometric mean) and use the responder \"friction\"");
     CHECK(problem(R"({"warm_start": 1})") == "contact_solver.warm_start: must be true or false, got the number 1");
+    CHECK(problem(R"({"sleeping": "no"})").starts_with("contact_solver.sleeping: must be true or false"));
     CHECK(problem(R"({"iterations": 5})").starts_with("contact_solver.iterations: unknown key"));
     CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false})") == "no error");
 }

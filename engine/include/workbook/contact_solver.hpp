@@ -66,6 +66,14 @@ struct ContactSolverSettings {
     /// Most overlap a point's bias asks to remove in one step, m: a deep overlap pushed out at
     /// once would push bodies through their neighbours.
     double max_push = 0.005;
+    /// Islands of bodies that stand still fall asleep and cost nothing until touched
+    /// (workbook/sleeping.hpp).
+    bool sleeping = true;
+    /// A body is still while its centre, and any point of it through its spin, moves slower
+    /// than this, m/s.
+    double sleep_speed = 0.01;
+    /// An island falls asleep when every body of it has been still this long, s.
+    double sleep_time = 0.5;
 };
 
 /// The chapter's functions the solver calls (see chapters/resting-contact). Each works on one
@@ -127,6 +135,11 @@ public:
 
     /// The impulses of the last solve, one per contact, in the contacts' order.
     [[nodiscard]] std::span<const ContactImpulses> impulses() const { return impulses_; }
+
+    /// Makes room for `contacts` contacts in what the solver keeps and its scratch (the world
+    /// calls it with its contact list's capacity, so that the solver allocates only in the
+    /// steps where that list grows).
+    void reserve(std::size_t contacts);
 
     /// Forgets the impulses remembered for warm starting.
     void forget() { previous_.clear(); }

@@ -17,6 +17,7 @@
 #include "workbook/probes.hpp"
 #include "workbook/response_model.hpp"
 #include "workbook/rigid_body.hpp"
+#include "workbook/sleeping.hpp"
 #include "workbook/swept_spheres.hpp"
 
 namespace workbook {
@@ -147,6 +148,8 @@ public:
     [[nodiscard]] const ContactSolverReport& contact_solver_report() const { return solver_report_; }
     /// The contact solver, with the impulses of its last solve.
     [[nodiscard]] const ContactSolver& contact_solver() const { return contact_solver_; }
+    /// Which bodies sleep (a model with a contact solver, ContactSolverSettings::sleeping).
+    [[nodiscard]] const Sleeping& sleeping() const { return sleeping_; }
 
     /// Simulated time since the start, s.
     [[nodiscard]] double time() const { return time_; }
@@ -233,6 +236,9 @@ private:
     std::uint64_t steps_ = 0;
     ContactSolver contact_solver_;
     ContactSolverReport solver_report_;
+    Sleeping sleeping_;
+    /// The contacts the solver gets while some bodies sleep: those with an awake movable body.
+    std::vector<Contact> awake_contacts_;
 };
 
 }  // namespace workbook
