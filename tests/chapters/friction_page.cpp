@@ -5,6 +5,7 @@
 //    prints is recomputed here, with the reference's own functions.
 // 2. The rolling ball's worked example: the closed forms the page prints.
 // 3. The figures' captions: each number recomputed.
+// 4. Every public step test is named under the heading of its own step.
 #include <catch2/catch_test_macros.hpp>
 
 #include <cmath>
@@ -173,4 +174,9 @@ TEST_CASE("chapter 6: the figures' captions", "[friction]") {
     has("friction/ball-starts-rolling", page_number(5.0 / 7 * 3.5, 2) + " m/s");
     has("friction/ball-with-backspin", page_number(2 * (2.0 + 0.1 * 60) / (7 * 0.2 * g), 4) + " s");
     CHECK(std::abs((5 * 2.0 - 2 * 0.1 * 60) / 7 - (-2.0 / 7)) <= 1e-15);
+}
+
+TEST_CASE("chapter 6: every public step test is named under its step", "[friction]") {
+    const int found = check_step_tests_named_under_their_steps(chapter_page(), WORKBOOK_SOURCE_DIR "/tests/steps/friction.cpp");
+    CHECK(found == 13);
 }
