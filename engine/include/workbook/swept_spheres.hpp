@@ -69,8 +69,8 @@ struct SweepScratch {
 /// swept test moves a sphere's proxy with the sphere) and the broad phase that found the swept
 /// test's partners. Both null without a grid.
 struct SweepGrid {
-    ProxySet* proxies = nullptr;
-    const BroadPhase* broad_phase = nullptr;
+    ProxySet* proxies = nullptr;                ///< the proxies the grid was filled from; moved with a moved sphere
+    const BroadPhase* broad_phase = nullptr;  ///< the broad phase whose sweep_partners() the swept test reads
 };
 
 /// The swept test, after detect() has filled `contacts`: every sphere that moved further than
