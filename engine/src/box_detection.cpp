@@ -363,10 +363,9 @@ bool collide_box_box(const RigidBody& a, const RigidBody& b, Contact& out) {
     const OrientedBox box_b = oriented_box(b);
     Separation s;
     if (!least_overlap(box_a, box_b, s)) return false;
-    const double merge_distance =
-        relative_tolerance * std::max(largest_half_extent(box_a), largest_half_extent(box_b));
-
-    const double touching = tolerances::resting_corner * std::max(largest_half_extent(box_a), largest_half_extent(box_b));
+    const double size = std::max(largest_half_extent(box_a), largest_half_extent(box_b));
+    const double merge_distance = relative_tolerance * size;
+    const double touching = tolerances::resting_corner * size;
 
     out.normal = s.normal;
     if (s.kind == Separation::Kind::face_of_a)  // a's face towards b points along -normal

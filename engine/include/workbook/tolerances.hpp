@@ -41,7 +41,7 @@ inline constexpr double geometric_tie = conservative_slack;
 
 /// Box detection: how far in front of the face below a corner of a face resting on it may lie
 /// and still touch it (as a point of depth 0), relative to the boxes' size. A box resting on a
-/// box keeps the depth it started with, for a stack built touching none, so its corners sit
+/// box keeps the depth it started with (none, for a stack built touching), so its corners sit
 /// on the face below to within rounding; the contact solver stops its passes at a tolerance
 /// (1e-9 m/s), and what it leaves turns a resting face by about 1e-8 rad a second (measured on
 /// chapter 5's stack of ten boxes with sleeping off): some 6e-7 rad in a minute, a tenth of
