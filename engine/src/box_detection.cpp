@@ -161,9 +161,11 @@ struct Separation {
 
 /// Face-face contact: `reference` owns the face whose outward normal is `outward` (unit, along
 /// one of its axes, index `face_axis`); the face of `incident` turned most against it is
-/// clipped to the reference face's sides, and the clipped corners behind the face are kept.
+/// clipped to the reference face's sides, and the clipped corners behind the face, or on it to
+/// within `touching`, are kept.
 void clip_incident_face(const OrientedBox& reference, int face_axis, const Vector3& outward,
-                        const OrientedBox& incident, const Vector3& normal, double merge_distance, Contact& out) {
+                        const OrientedBox& incident, const Vector3& normal, double merge_distance, double touching,
+                        Contact& out) {
     const auto f = static_cast<std::size_t>(face_axis);
     const Vector3 face_centre = reference.centre + outward * reference.half[f];
     const double face_offset = dot(face_centre, outward);
@@ -185,10 +187,17 @@ void clip_incident_face(const OrientedBox& reference, int face_axis, const Vecto
         polygon = clip(polygon, -axis, -(centre - reference.half[side]));
     }
 
+    // A corner lying on the reference face is kept as a point of depth 0. A box resting on a
+    // box keeps the depth it started with (both fall by the same g dt^2 a step), which for a
+    // stack built touching is none: its corners sit on the face below to within rounding, and
+    // a tilt of 1e-9 rad lifts one of them a hair in front. Dropping that corner would leave the
+    // box on three points, free to turn about the diagonal through two of them, and the
+    // impulses the four points carried last step, applied again at three, would turn it.
     Candidates candidates;
     for (std::size_t i = 0; i < polygon.count; ++i) {
         const double depth = face_offset - dot(polygon.vertex[i], outward);
-        if (depth > 0.0) candidates.add(polygon.vertex[i] + outward * (depth / 2.0), depth, merge_distance);
+        if (depth > -touching)
+            candidates.add(polygon.vertex[i] + outward * (depth / 2.0), std::max(depth, 0.0), merge_distance);
     }
     keep_four(candidates, normal, merge_distance, out);
 }
@@ -215,7 +224,7 @@ void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& 
     const double rb = dot(db, r);
     const double p = std::clamp((cosine * rb - ra) / denominator, -a.half[ia], a.half[ia]);
     const double q = std::clamp(rb + p * cosine, -b.half[ib], b.half[ib]);
-    out.add_point((on_a + da * p + on_b + db * q) * 0.5, s.overlap);
+    out.add_point((on_a + da * p + on_b + db * q) * 0.5, std::max(s.overlap, 0.0));  // touching edges: depth 0
 }
 
 /// Below this length a cross product of two unit edge directions (the sine of their angle)
@@ -224,7 +233,10 @@ void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& 
 /// eps / length, so 1e-6 keeps a wrongly tilted axis below 1e-10 of the box size.
 constexpr double parallel_edges = tolerances::parallel_edges;
 
-/// The separating-axis test; false when some axis separates the boxes (or they only touch).
+/// The separating-axis test; false when some axis separates the boxes by more than `tie`.
+/// Boxes that touch to within rounding are in contact, with an overlap of (about) zero: a
+/// stack built of boxes exactly on each other is held from its first step, instead of each
+/// box finding the one below only when rounding happens to make them overlap.
 bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& result) {
     const Vector3 offset = a.centre - b.centre;
     const double tie = relative_tolerance * std::max(largest_half_extent(a), largest_half_extent(b));
@@ -241,13 +253,13 @@ bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& resul
     for (int i = 0; i < 3; ++i) {
         Vector3 n;
         const double overlap = overlap_on(a.axis[static_cast<std::size_t>(i)], n);
-        if (overlap <= 0.0) return false;
+        if (overlap <= -tie) return false;
         if (best_face_a.index_a < 0 || overlap < best_face_a.overlap) best_face_a = {Separation::Kind::face_of_a, n, overlap, i, 0};
     }
     for (int j = 0; j < 3; ++j) {
         Vector3 n;
         const double overlap = overlap_on(b.axis[static_cast<std::size_t>(j)], n);
-        if (overlap <= 0.0) return false;
+        if (overlap <= -tie) return false;
         if (best_face_b.index_b < 0 || overlap < best_face_b.overlap) best_face_b = {Separation::Kind::face_of_b, n, overlap, 0, j};
     }
     Separation best_edges{Separation::Kind::edges, {}, 0.0, -1, -1};
@@ -258,7 +270,7 @@ bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& resul
             if (c_length < parallel_edges) continue;
             Vector3 n;
             const double overlap = overlap_on(c / c_length, n);
-            if (overlap <= 0.0) return false;
+            if (overlap <= -tie) return false;
             if (best_edges.index_a < 0 || overlap < best_edges.overlap) best_edges = {Separation::Kind::edges, n, overlap, i, j};
         }
     }
@@ -351,14 +363,15 @@ bool collide_box_box(const RigidBody& a, const RigidBody& b, Contact& out) {
     const OrientedBox box_b = oriented_box(b);
     Separation s;
     if (!least_overlap(box_a, box_b, s)) return false;
-    const double merge_distance =
-        relative_tolerance * std::max(largest_half_extent(box_a), largest_half_extent(box_b));
+    const double size = std::max(largest_half_extent(box_a), largest_half_extent(box_b));
+    const double merge_distance = relative_tolerance * size;
+    const double touching = tolerances::resting_corner * size;
 
     out.normal = s.normal;
     if (s.kind == Separation::Kind::face_of_a)  // a's face towards b points along -normal
-        clip_incident_face(box_a, s.index_a, -s.normal, box_b, s.normal, merge_distance, out);
+        clip_incident_face(box_a, s.index_a, -s.normal, box_b, s.normal, merge_distance, touching, out);
     else if (s.kind == Separation::Kind::face_of_b)  // b's face towards a points along +normal
-        clip_incident_face(box_b, s.index_b, s.normal, box_a, s.normal, merge_distance, out);
+        clip_incident_face(box_b, s.index_b, s.normal, box_a, s.normal, merge_distance, touching, out);
     else
         edge_contact(box_a, box_b, s, out);
     if (out.point_count == 0) return false;  // a face overlap whose clipped face stays in front: only grazing

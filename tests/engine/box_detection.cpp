@@ -17,6 +17,7 @@
 #include "seeded_random.hpp"
 #include "workbook/box_detection.hpp"
 #include "workbook/detection.hpp"
+#include "workbook/tolerances.hpp"
 
 using namespace workbook;
 using workbook::engine_tests::is_close_to;
@@ -83,19 +84,26 @@ double size_of(const RigidBody& body) {
 void check_contact_laws(const RigidBody& body1, const RigidBody& body2, const Contact& contact) {
     const double size = std::max(size_of(body1), size_of(body2));
     const double tolerance = 1e-12 * size;
+    // Between two boxes a corner lying on the other's face to within tolerances::resting_corner
+    // touches it, as a point of depth 0 halfway between the surfaces: outside either box by at
+    // most half that distance.
+    const bool boxes = body1.shape.kind == ShapeKind::box && body2.shape.kind == ShapeKind::box;
+    const double touching = boxes ? tolerances::resting_corner * size : 0.0;
     CHECK_THAT(length(contact.normal), WithinAbs(1.0, 8 * eps));
     REQUIRE(contact.point_count >= 1);
     REQUIRE(contact.point_count <= max_contact_points);
     if (body2.shape.kind != ShapeKind::plane)
-        CHECK_THAT(contact.penetration, WithinAbs(shadow_overlap(body1, body2, contact.normal), tolerance));
+        CHECK_THAT(contact.penetration, WithinAbs(std::max(shadow_overlap(body1, body2, contact.normal), 0.0), tolerance));
     for (std::size_t i = 0; i < contact.point_count; ++i) {
         const ContactPoint& point = contact.points[i];
         CAPTURE(i, point.position, point.penetration, contact.normal);
-        CHECK(point.penetration > 0.0);
+        CHECK(point.penetration >= 0.0);
+        CHECK((point.penetration > 0.0 || boxes));
         CHECK(point.penetration <= contact.penetration + tolerance);
         // Halfway between the surfaces: outside either body by at most half the point's depth.
-        CHECK(distance_outside(body1, point.position) <= point.penetration / 2 + tolerance);
-        CHECK(distance_outside(body2, point.position) <= point.penetration / 2 + tolerance);
+        const double room = point.penetration > 0.0 ? point.penetration / 2 : touching / 2;
+        CHECK(distance_outside(body1, point.position) <= room + tolerance);
+        CHECK(distance_outside(body2, point.position) <= room + tolerance);
     }
 }
 
@@ -346,6 +354,39 @@ TEST_CASE("box-box: a cube on its edge on a big box touches along that edge", "[
     CHECK_THAT(contact.normal, is_close_to(Vector3{0, 1, 0}, eps));
     check_points(contact, {{0.2, 0.495, 0.6}, {0.2, 0.495, -0.4}}, 0.01, 1e-15);
     check_contact_laws(cube, big, contact);
+}
+
+TEST_CASE("box-box: a box resting on a box keeps its four corners while they lie on the face below",
+          "[detection][box]") {
+    // Two 20 cm cubes, the upper one built exactly on the lower (its centre at 0.1 + 0.2, which
+    // rounding puts a few 1e-17 m off): they touch, and all four corners are points of depth 0.
+    const RigidBody lower = make_box(1.0, {0.1, 0.1, 0.1}, {0, 0, 0.1});
+    Contact contact;
+    REQUIRE(collide_box_box(make_box(1.0, {0.1, 0.1, 0.1}, {0, 0, 0.1 + 0.2}), lower, contact));
+    CHECK_THAT(contact.normal, is_close_to(Vector3{0, 0, 1}, eps));
+    check_points(contact, {{-0.1, -0.1, 0.2}, {0.1, -0.1, 0.2}, {-0.1, 0.1, 0.2}, {0.1, 0.1, 0.2}}, 0.0, 1e-15);
+
+    // Tilted by 1e-7 rad about x: the corners at y = -0.1 sink 1e-8 m into the face below, those
+    // at y = +0.1 rise 1e-8 m in front of it. Those still touch (within resting_corner, 1e-6 m
+    // for these boxes): four points, the raised two of depth 0, and nothing to turn about.
+    const double hair = 1e-7;
+    REQUIRE(collide_box_box(make_box(1.0, {0.1, 0.1, 0.1}, {0, 0, 0.3}, from_axis_angle({1, 0, 0}, hair)), lower, contact));
+    REQUIRE(contact.point_count == 4);
+    int raised = 0;
+    for (std::size_t i = 0; i < contact.point_count; ++i) {
+        const double expected = contact.points[i].position.y < 0.0 ? 0.1 * std::sin(hair) : 0.0;
+        CHECK_THAT(contact.points[i].penetration, WithinAbs(expected, 1e-15));  // rounding of 0.3: a few ulps
+        raised += contact.points[i].penetration == 0.0 ? 1 : 0;
+    }
+    CHECK(raised == 2);
+
+    // Tilted by 1e-4 rad, the raised corners stand 1e-5 m clear, ten times the tolerance: the
+    // box rests on its lower edge, two points.
+    REQUIRE(collide_box_box(make_box(1.0, {0.1, 0.1, 0.1}, {0, 0, 0.3}, from_axis_angle({1, 0, 0}, 1e-4)), lower, contact));
+    CHECK(contact.point_count == 2);
+
+    // Lifted 1e-6 m clear, far more than rounding: apart.
+    CHECK_FALSE(collide_box_box(make_box(1.0, {0.1, 0.1, 0.1}, {0, 0, 0.3 + 1e-6}), lower, contact));
 }
 
 TEST_CASE("box-box: apart, or separated only along an edge axis, is no contact", "[detection][box]") {

@@ -60,11 +60,12 @@ def main():
         "stack-of-10-boxes": scene(
             "A frictionless stack of ten 20 cm boxes, 60 s",
             "Ten boxes of 1 kg, 20 cm a side, stand on each other on the ground, frictionless. Each contact has "
-            "four points, and the weight of the nine boxes above has to reach the ground in every step. Without "
-            "friction nothing holds a box that is left a hair's breadth tilted: within the first second the "
-            "stack tips and the boxes slide apart. Chapter 6 gives the same stack friction, and it stands.",
+            "four points, one under each corner, and the weight of the nine boxes above has to reach the ground "
+            "in every step. Every normal is vertical, so nothing pushes a box sideways, and the stack stands "
+            "for the whole minute: no box moves by more than a few nanometres. The first step has no impulses "
+            "of the last one to start from and takes some 800 passes to carry the weight down.",
             [box(f"box {i + 1}", 0.0, 0.1 + 0.2 * i) for i in range(10)] + [GROUND], 60.0,
-            solver={"velocity_iterations": 300}),
+            solver={"velocity_iterations": 1000}),
         "column-of-15-balls": scene(
             "A column of fifteen balls resting for 60 s",
             "Fifteen balls of 1 kg and 5 cm radius stand on each other in a line on the ground, frictionless. "

@@ -2,7 +2,11 @@
 /// \file
 /// Narrow-phase detection for boxes: box-plane, sphere-box and box-box (separating axes and
 /// face clipping). Each function writes the contact in place and returns whether the bodies
-/// overlap; like the sphere tests, touching without overlap is no contact.
+/// overlap; like the sphere tests, touching without overlap is no contact, except between two
+/// boxes: boxes that touch to within rounding (1e-9 of the larger box) are in contact, and a
+/// corner of a face resting on a face touches it while it lies on it to within
+/// tolerances::resting_corner (a point of depth 0), so that a box resting on a box is held at
+/// all four corners.
 ///
 /// Every contact point sits halfway between the two surfaces it joins (as for spheres), so a
 /// point may lie outside either body by at most half its depth. A pair has at most
