@@ -89,7 +89,24 @@ double squared_gap(const Vector3& d, const Vector3& u, const Vector3& a, double 
     return length_squared(d + u * t + a * (t * t)) - radii * radii;
 }
 
-std::optional<double> sphere_sphere(const RigidBody& s1, const RigidBody& s2, const Vector3& gravity, double k,
+/// What the time of impact of two spheres reads of each: the event loop hands it over from its
+/// compact copies (EventBody), time_of_impact() from the bodies.
+struct SphereMotion {
+    Vector3 position;  ///< m
+    Vector3 velocity;  ///< m/s
+    double radius;     ///< m
+    bool immovable;    ///< gravity does not move it
+};
+
+SphereMotion sphere_motion(const RigidBody& body) {
+    return {body.position, body.velocity, body.shape.radius, body.is_immovable()};
+}
+
+Vector3 acceleration_of(const SphereMotion& sphere, const Vector3& gravity) {
+    return sphere.immovable ? Vector3{} : gravity;
+}
+
+std::optional<double> sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vector3& gravity, double k,
                                     double limit) {
     const Vector3 d = s1.position - s2.position;
     const Vector3 u = s1.velocity - s2.velocity;
@@ -98,7 +115,7 @@ std::optional<double> sphere_sphere(const RigidBody& s1, const RigidBody& s2, co
     // that does not move relative to itself keeps its distance (a row of touching balls, two
     // balls falling together) ...
     if (u == Vector3{} && a == Vector3{}) return std::nullopt;
-    const double radii = s1.shape.radius + s2.shape.radius;
+    const double radii = s1.radius + s2.radius;
     const double limit2 = limit * limit;
     // ... and the centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
     // reach^2 <= 2 (|u|^2 limit^2 + |a|^2 limit^4); centres more than 2 max(radii, reach) apart
@@ -321,7 +338,7 @@ std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, con
     const RigidBody& first = a_first ? a : b;   // the sphere, or the box against a plane
     const RigidBody& second = a_first ? b : a;
     switch (pair_of(a.shape.kind, b.shape.kind)) {
-        case ShapePair::sphere_sphere: return sphere_sphere(a, b, gravity, k, limit);
+        case ShapePair::sphere_sphere: return sphere_sphere(sphere_motion(a), sphere_motion(b), gravity, k, limit);
         case ShapePair::sphere_plane: return sphere_plane(first, second, gravity, k, limit);
         case ShapePair::sphere_box:
             return (second.angular_velocity == Vector3{}) ? sphere_box(first, second, gravity, k, limit) : std::nullopt;  // a box that does not spin
@@ -353,7 +370,8 @@ public:
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
         EventScratch& s = scratch_;
-        s.since.assign(count_, 0.0);
+        s.state.resize(count_);
+        s.roles.resize(count_);
         s.events.assign(count_, 0);
         s.reach.assign(count_, 0.0);
         s.extra.clear();
@@ -366,7 +384,8 @@ public:
         // body that an impact sends further is searched again (outran()).
         s.proxies.clear(count_);
         for (std::uint32_t i = 0; i < count_; ++i) {
-            s.reach[i] = can_move(bodies_[i], dt_);
+            note(i, 0.0);
+            s.reach[i] = can_move(i, dt_);
             s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
@@ -407,8 +426,18 @@ public:
 
     /// Advances body i to time t within the step.
     void advance_to(std::uint32_t i, double t) {
-        advance(bodies_[i], gravity_, k_, t - scratch_.since[i]);
-        scratch_.since[i] = t;
+        advance(bodies_[i], gravity_, k_, t - scratch_.state[i].since);
+        note(i, t);
+    }
+
+    /// Copies into the compact arrays what predictions read of body i, whose state now refers
+    /// to time t: after every change the loop makes to the body (a move, a response, which may
+    /// also set a box spinning and so take it out of the loop).
+    void note(std::uint32_t i, double t) {
+        const RigidBody& body = bodies_[i];
+        scratch_.state[i] = {body.position, body.velocity, t, bounding_radius(body)};
+        scratch_.roles[i] = {takes_part(body), body.is_immovable(), body.shape.kind == ShapeKind::sphere,
+                             body.shape.kind == ShapeKind::plane};
     }
 
     /// After an event at time t: body i's impacts are predicted again with each candidate.
@@ -416,7 +445,7 @@ public:
         EventScratch& s = scratch_;
         ++s.events[i];
         if (outran(i, t)) search_again(i, t);
-        if (s.events[i] >= max_events_per_body || !takes_part(bodies_[i])) return;
+        if (s.events[i] >= max_events_per_body || !s.roles[i].takes_part) return;
         for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) predict(i, s.partners[n], t);
         for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
     }
@@ -443,8 +472,8 @@ public:
         EventScratch& s = scratch_;
         s.ends.resize(count_);
         for (std::uint32_t i = 0; i < count_; ++i) {
-            advance_to(i, dt_);
-            const RigidBody& body = bodies_[i];
+            RigidBody& body = bodies_[i];
+            advance(body, gravity_, k_, dt_ - s.state[i].since);  // the loop is over: nothing to note
             s.ends[i] = {body.position, body.shape.kind == ShapeKind::sphere ? body.shape.radius : -1.0};
         }
     }
@@ -465,9 +494,10 @@ private:
     /// How far `body` may move in `left` seconds from the state it has, m: |v| left, plus for
     /// a movable body what gravity adds, (|k| + 1) |g| left^2, which also covers the motion
     /// being split into pieces at its events (each piece starts with the velocity gravity gave).
-    [[nodiscard]] double can_move(const RigidBody& body, double left) const {
-        const double speed_part = length(body.velocity) * left;
-        return body.is_immovable() ? speed_part : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+    [[nodiscard]] double can_move(std::uint32_t i, double left) const {
+        const double speed_part = length(scratch_.state[i].velocity) * left;
+        return scratch_.roles[i].immovable ? speed_part
+                                           : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
     }
 
     /// True when body b is among body a's candidates already (its lists are short: the
@@ -500,37 +530,64 @@ private:
     /// Pushes the first impact of bodies a and b after time t, if any within the step.
     void predict(std::uint32_t a, std::uint32_t b, double t) {
         EventScratch& s = scratch_;
-        const RigidBody& body_a = bodies_[a];
-        const RigidBody& body_b = bodies_[b];
-        if (!takes_part(body_a) || !takes_part(body_b) || (body_a.is_immovable() && body_b.is_immovable())) return;
+        const EventRole& role_a = s.roles[a];
+        const EventRole& role_b = s.roles[b];
+        if (!role_a.takes_part || !role_b.takes_part || (role_a.immovable && role_b.immovable)) return;
         if (s.events[a] >= max_events_per_body || s.events[b] >= max_events_per_body) return;
+        const EventBody& state_a = s.state[a];
+        const EventBody& state_b = s.state[b];
         // Most candidates cannot meet at the speeds they now have: their stored centres are
         // further apart than both can move in what is left of the step (one comparison, as
         // cheap as the discrete loop's overlap test).
-        if (body_a.shape.kind != ShapeKind::plane && body_b.shape.kind != ShapeKind::plane) {
-            const double within = bounding_radius(body_a) + bounding_radius(body_b) + can_move(body_a, dt_ - s.since[a]) +
-                                  can_move(body_b, dt_ - s.since[b]);
-            if (length_squared(body_a.position - body_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
+        if (!role_a.plane && !role_b.plane) {
+            const double within = state_a.bounding_radius + state_b.bounding_radius + can_move(a, dt_ - state_a.since) +
+                                  can_move(b, dt_ - state_b.since);
+            if (length_squared(state_a.position - state_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
         }
-        // Each as time_of_impact() must see it at t (moved only when its state is older).
-        const SeenAfter seen_a(bodies_[a], gravity_, k_, t - s.since[a]);
-        const SeenAfter seen_b(bodies_[b], gravity_, k_, t - s.since[b]);
-        const auto tau = time_of_impact(body_a, body_b, gravity_, k_, dt_ - t);
+        const auto tau = role_a.sphere && role_b.sphere ? spheres_meet(a, b, t) : bodies_meet(a, b, t);
         if (!tau) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
         s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
         std::push_heap(s.heap.begin(), s.heap.end(), later);
     }
 
+    /// Two spheres' time of impact after t, from the compact arrays alone: each seen at t as
+    /// SeenAfter shows a body (the same arithmetic, so the same answer).
+    [[nodiscard]] std::optional<double> spheres_meet(std::uint32_t a, std::uint32_t b, double t) const {
+        return sphere_sphere(seen_at(a, t), seen_at(b, t), gravity_, k_, dt_ - t);
+    }
+
+    /// Sphere i as time_of_impact() must see it at time t; see SeenAfter.
+    [[nodiscard]] SphereMotion seen_at(std::uint32_t i, double t) const {
+        const EventBody& state = scratch_.state[i];
+        SphereMotion seen{state.position, state.velocity, state.bounding_radius, scratch_.roles[i].immovable};
+        const double s = t - state.since;
+        if (s <= 0.0) return seen;
+        if (seen.immovable) {
+            seen.position += state.velocity * s;
+            return seen;
+        }
+        seen.position += state.velocity * s + gravity_ * (k_ * s * s);
+        seen.velocity += gravity_ * (2.0 * k_ * s);
+        return seen;
+    }
+
+    /// Any other pair's time of impact after t, from the bodies themselves, each moved to t in place.
+    [[nodiscard]] std::optional<double> bodies_meet(std::uint32_t a, std::uint32_t b, double t) const {
+        const SeenAfter seen_a(bodies_[a], gravity_, k_, t - scratch_.state[a].since);
+        const SeenAfter seen_b(bodies_[b], gravity_, k_, t - scratch_.state[b].since);
+        return time_of_impact(bodies_[a], bodies_[b], gravity_, k_, dt_ - t);
+    }
+
     /// How far body i, as it now moves, may get from where it started the step by the end.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
         const GridProxy& p = scratch_.proxies.proxies[i];
-        return length(bodies_[i].position - Vector3{p.x, p.y, p.z}) + can_move(bodies_[i], dt_ - t);
+        return length(scratch_.state[i].position - Vector3{p.x, p.y, p.z}) + can_move(i, dt_ - t);
     }
 
     /// True when body i may leave the widened sphere its candidates were found for.
     [[nodiscard]] bool outran(std::uint32_t i, double t) const {
-        return !bodies_[i].is_immovable() && needs_reach(i, t) > scratch_.reach[i];
+        return !scratch_.roles[i].immovable && needs_reach(i, t) > scratch_.reach[i];
     }
 
     /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
@@ -541,7 +598,7 @@ private:
         s.near.clear();
         s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, radius, s.near);
         for (const std::uint32_t j : s.near)
-            if (j != i && !(bodies_[i].is_immovable() && bodies_[j].is_immovable())) add_candidate(i, j);
+            if (j != i && !(s.roles[i].immovable && s.roles[j].immovable)) add_candidate(i, j);
     }
 
     /// Widens body i's reach to what it now needs, twice over (so that a body sped up again
@@ -550,7 +607,7 @@ private:
     void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
         s.reach[i] = 2.0 * needs_reach(i, t);
-        add_near(i, bounding_radius(bodies_[i]) + s.reach[i]);
+        add_near(i, s.state[i].bounding_radius + s.reach[i]);
     }
 
     std::span<RigidBody> bodies_;
@@ -579,6 +636,8 @@ double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, Even
     scratch.contacts.push_back(contact);
     if (check.on && !(poison(bodies[first]) + poison(bodies[second]) == 0.0))
         check_finite(bodies, check.names, check.step, "event: respond");
+    loop.note(first, event.t);  // the response changed the two bodies
+    loop.note(second, event.t);
     loop.changed(first, event.t);
     loop.changed(second, event.t);
     return change;
