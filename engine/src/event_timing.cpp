@@ -534,21 +534,29 @@ private:
         const EventRole& role_b = s.roles[b];
         if (!role_a.takes_part || !role_b.takes_part || (role_a.immovable && role_b.immovable)) return;
         if (s.events[a] >= max_events_per_body || s.events[b] >= max_events_per_body) return;
-        const EventBody& state_a = s.state[a];
-        const EventBody& state_b = s.state[b];
-        // Most candidates cannot meet at the speeds they now have: their stored centres are
-        // further apart than both can move in what is left of the step (one comparison, as
-        // cheap as the discrete loop's overlap test).
-        if (!role_a.plane && !role_b.plane) {
-            const double within = state_a.bounding_radius + state_b.bounding_radius + can_move(a, dt_ - state_a.since) +
-                                  can_move(b, dt_ - state_b.since);
-            if (length_squared(state_a.position - state_b.position) > within * within * (1.0 + tolerances::conservative_slack)) return;
-        }
-        const auto tau = role_a.sphere && role_b.sphere ? spheres_meet(a, b, t) : bodies_meet(a, b, t);
+        // Two spheres are timed from the compact arrays, whose first tests (no square root)
+        // pass over most pairs that cannot meet; any other pair first passes cheaply over
+        // bodies too far apart to meet at the speeds they now have.
+        const auto tau = role_a.sphere && role_b.sphere ? spheres_meet(a, b, t)
+                         : may_meet(a, b)               ? bodies_meet(a, b, t)
+                                                        : std::nullopt;
         if (!tau) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
         s.heap.push_back({t + *tau, i, j, s.events[i], s.events[j]});
         std::push_heap(s.heap.begin(), s.heap.end(), later);
+    }
+
+    /// False when bodies a and b (not planes) cannot meet at the speeds they now have: their
+    /// stored centres are further apart than both can move in what is left of the step (one
+    /// comparison, as cheap as the discrete loop's overlap test). Always true with a plane.
+    [[nodiscard]] bool may_meet(std::uint32_t a, std::uint32_t b) const {
+        const EventScratch& s = scratch_;
+        if (s.roles[a].plane || s.roles[b].plane) return true;
+        const EventBody& state_a = s.state[a];
+        const EventBody& state_b = s.state[b];
+        const double within = state_a.bounding_radius + state_b.bounding_radius + can_move(a, dt_ - state_a.since) +
+                              can_move(b, dt_ - state_b.since);
+        return length_squared(state_a.position - state_b.position) <= within * within * (1.0 + tolerances::conservative_slack);
     }
 
     /// Two spheres' time of impact after t, from the compact arrays alone: each seen at t as
