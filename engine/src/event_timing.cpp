@@ -361,12 +361,16 @@ std::optional<double> time_of_impact(const RigidBody& a, const RigidBody& b, con
 namespace {
 
 /// The heap's order: the earliest event on top, and among equally early ones the smallest
-/// pair (i, then j), the one a scan of every pair in index order would pick.
-bool later(const ImpactEvent& a, const ImpactEvent& b) {
-    if (a.t != b.t) return a.t > b.t;
-    if (a.i != b.i) return a.i > b.i;
-    return a.j > b.j;
-}
+/// pair (i, then j), the one a scan of every pair in index order would pick. A type rather
+/// than a function, so that the heap's every comparison is inlined, not called through a
+/// pointer.
+struct Later {
+    bool operator()(const ImpactEvent& a, const ImpactEvent& b) const {
+        if (a.t != b.t) return a.t > b.t;
+        if (a.i != b.i) return a.i > b.i;
+        return a.j > b.j;
+    }
+};
 
 /// The event loop of one step over `bodies`; see move_impact_to_impact().
 class EventLoop {
@@ -424,7 +428,7 @@ public:
     std::optional<ImpactEvent> next() {
         EventScratch& s = scratch_;
         while (!s.heap.empty()) {
-            std::pop_heap(s.heap.begin(), s.heap.end(), later);
+            std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
             const ImpactEvent e = s.heap.back();
             s.heap.pop_back();
             if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
@@ -551,7 +555,7 @@ private:
         if (tau == no_impact) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
         s.heap.push_back({t + tau, i, j, s.events[i], s.events[j]});
-        std::push_heap(s.heap.begin(), s.heap.end(), later);
+        std::push_heap(s.heap.begin(), s.heap.end(), Later{});
     }
 
     /// False when bodies a and b (not planes) cannot meet at the speeds they now have: their
