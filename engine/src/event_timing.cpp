@@ -479,15 +479,21 @@ public:
     }
 
     /// Advances every body to the end of the step, each from the time its state refers to,
-    /// and notes where each sphere ends.
-    void finish() {
+    /// and notes where each sphere ends. Returns the sum of poison() over the bodies (0 when
+    /// every number is finite), taken in the same pass as the discrete step's integrate() takes
+    /// it: at N = 100,000 a pass of its own over the bodies (328 bytes each) for check_finite()
+    /// was 3% of the gas bench's whole profile.
+    double finish() {
         EventScratch& s = scratch_;
         s.ends.resize(count_);
+        double sum = 0.0;
         for (std::uint32_t i = 0; i < count_; ++i) {
             RigidBody& body = bodies_[i];
             advance(body, gravity_, k_, dt_ - s.state[i].since);  // the loop is over: nothing to note
             s.ends[i] = {body.position, body.shape.kind == ShapeKind::sphere ? body.shape.radius : -1.0};
+            sum += poison(body);
         }
+        return sum;
     }
 
 private:
@@ -681,8 +687,8 @@ ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMo
         if (!event) break;
         energy_change += answer_impact(bodies, *event, loop, model, check, scratch);
     }
-    loop.finish();  // every body to the end of the step
-    if (check.on) check_finite(bodies, check.names, check.step, "event: advance");
+    const double poisoned = loop.finish();  // every body to the end of the step
+    if (check.on && !(poisoned == 0.0)) check_finite(bodies, check.names, check.step, "event: advance");
     return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};
 }
 
