@@ -452,15 +452,21 @@ public:
                              body.shape.kind == ShapeKind::plane};
     }
 
-    /// After an event at time t: body i's impacts are predicted again with each candidate.
-    void changed(std::uint32_t i, double t) {
+    /// After an event at time t: body i's impacts are predicted again with each candidate but
+    /// `skip` (or with all, for no_body).
+    void changed(std::uint32_t i, double t, std::uint32_t skip) {
         EventScratch& s = scratch_;
         ++s.events[i];
         if (outran(i, t)) search_again(i, t);
         if (s.events[i] >= max_events_per_body || !s.roles[i].takes_part) return;
-        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) predict(i, s.partners[n], t);
-        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) predict(i, s.extra_nodes[n].partner, t);
+        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n)
+            if (s.partners[n] != skip) predict(i, s.partners[n], t);
+        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next)
+            if (s.extra_nodes[n].partner != skip) predict(i, s.extra_nodes[n].partner, t);
     }
+
+    /// For changed(): no body to skip.
+    static constexpr std::uint32_t no_body = std::numeric_limits<std::uint32_t>::max();
 
     /// Every candidate pair that overlaps at the end of the step, each once, sorted by (first,
     /// second) as detect() would find them: the candidates hold every pair whose bodies came
@@ -664,8 +670,10 @@ double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, Even
         check_finite(bodies, check.names, check.step, "event: respond");
     loop.note(first, event.t);  // the response changed the two bodies
     loop.note(second, event.t);
-    loop.changed(first, event.t);
-    loop.changed(second, event.t);
+    // The pair itself is predicted again once, with the second body: predicted with the first,
+    // it would carry the second's count from before the event and be passed over as stale.
+    loop.changed(first, event.t, second);
+    loop.changed(second, event.t, EventLoop::no_body);
     return change;
 }
 
