@@ -18,7 +18,9 @@
 /// phase, each body's bounding sphere widened by how far it may move in the step; each body
 /// keeps the time its state refers to and is advanced only when it takes part in an event (and
 /// at the end of the step), and the events wait in a heap. An event then costs the times of
-/// impact of its two bodies with their candidates, not of every pair in the world.
+/// impact of its two bodies with their candidates, not of every pair in the world. Those
+/// predictions read compact copies of what they need of each body (EventBody, EventRole), not
+/// the bodies, which are read and written only where an event changes them.
 
 #include <cstdint>
 #include <optional>
