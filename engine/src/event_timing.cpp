@@ -391,14 +391,17 @@ public:
         s.extra_nodes.clear();
         s.heap.clear();
         s.contacts.clear();
+        s.moving_planes.clear();
         // Each body's bounding sphere widened by how far it can move this step at the velocity
         // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
         // body that an impact sends further is searched again (outran()).
         s.proxies.clear(count_);
         for (std::uint32_t i = 0; i < count_; ++i) {
+            const RigidBody& body = bodies_[i];
             note(i, 0.0);
             s.reach[i] = can_move(i, dt_);
-            s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i]);
+            s.proxies.add(body, i, 0.0, {}, s.reach[i]);
+            if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
         // Each body's candidates, as lists by body (a counting sort of the pairs).
@@ -412,14 +415,11 @@ public:
         }
         for (std::uint32_t i = count_; i > 0; --i) s.start[i] = s.start[i - 1];
         s.start[0] = 0;
-        // A kinematic plane that moves or turns can meet any body: each is its candidate.
-        for (std::uint32_t i = 0; i < count_; ++i) {
-            const RigidBody& body = bodies_[i];
-            if (body.shape.kind != ShapeKind::plane || (body.velocity == Vector3{} && body.angular_velocity == Vector3{}))
-                continue;
+        // A kinematic plane that moves or turns can meet any body: each is its candidate. (Found
+        // in the pass above: a pass of its own over the bodies cost a few percent at N = 100,000.)
+        for (const std::uint32_t i : s.moving_planes)
             for (std::uint32_t j = 0; j < count_; ++j)
                 if (j != i) add_candidate(j, i);
-        }
         for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
         for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
     }

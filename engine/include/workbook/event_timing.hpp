@@ -105,6 +105,7 @@ struct EventScratch {
     };
     std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
+    std::vector<std::uint32_t> moving_planes;  ///< the kinematic planes that move or turn this step
     /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
     std::vector<SphereEnd> ends;
     std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
