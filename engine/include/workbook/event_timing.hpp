@@ -75,7 +75,7 @@ struct EventBody {
     double bounding_radius = 0.0;  ///< m (workbook::bounding_radius; unused for a plane)
 };
 
-/// What kind of body the event loop has, one byte each, for the tests it makes before it
+/// What kind of body the event loop has, a byte per question, for the tests it makes before it
 /// reads any numbers.
 struct EventRole {
     bool takes_part = false;  ///< followed by the event loop (a sphere, or a plane or box that does not spin)
