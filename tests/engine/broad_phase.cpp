@@ -11,6 +11,7 @@
 #include "seeded_random.hpp"
 #include "state_hash.hpp"
 #include "workbook/broad_phase.hpp"
+#include "workbook/tolerances.hpp"
 #include "workbook/world.hpp"
 
 namespace {
@@ -107,6 +108,48 @@ TEST_CASE("the grid's pairs are sorted, unique, and a superset of the overlappin
         }
     }
     CHECK(overlapping > 10);
+}
+
+TEST_CASE("bodies_near() finds with the grid exactly the bodies and planes a test of every one finds",
+          "[broad_phase][event]") {
+    // Event timing searches again, from the grid's cells, around a body that outran its reach;
+    // the search visits only the cells its interval covers, so a body just inside the radius
+    // whose centre lies in a cell at the interval's edge must still be found.
+    const std::vector<RigidBody> bodies = crowd(workbook::testing::run_seed() + 7, 1500);
+    SeededRandom random(workbook::testing::run_seed() + 8);
+    ProxySet set;
+    set.clear(bodies.size());
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) set.add(bodies[i], i, 0.0, {}, random.uniform(0.0, 0.1));
+    BroadPhase broad;
+    std::vector<BodyPair> pairs;
+    broad.find_pairs(set, pairs, false, false);
+    REQUIRE(broad.has_grid());
+    constexpr double slack = 1.0 + tolerances::conservative_slack;
+    std::vector<std::uint32_t> near;
+    std::vector<std::uint32_t> expected;
+    std::size_t found = 0;
+    for (int query = 0; query < 300; ++query) {
+        // Centres inside the crowd and up to a metre outside it; radii from none to a third of it.
+        const Vector3 centre{random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0)};
+        const double radius = random.uniform(0.0, 1.3);
+        near.clear();
+        broad.bodies_near(set, centre, radius, near);
+        expected.clear();
+        for (const GridProxy& q : set.proxies) {
+            if (q.plane) continue;
+            const double within = (radius + q.radius) * slack;
+            const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
+            if (dx * dx + dy * dy + dz * dz <= within * within) expected.push_back(q.index);
+        }
+        for (const PlaneProxy& plane : set.planes)
+            if (dot(centre - plane.point, plane.normal) <= radius * slack) expected.push_back(plane.index);
+        std::sort(near.begin(), near.end());
+        std::sort(expected.begin(), expected.end());
+        CAPTURE(query, centre.x, centre.y, centre.z, radius);
+        REQUIRE(near == expected);
+        found += near.size();
+    }
+    CHECK(found > 3000);  // the queries did find bodies, not only empty answers
 }
 
 TEST_CASE("a body at NaN makes the grid fall back to every pair, with the same answer", "[broad_phase]") {

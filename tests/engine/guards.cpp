@@ -69,6 +69,47 @@ TEST_CASE("an overflow in integrate is reported as the position of that body", "
     }
 }
 
+TEST_CASE("under event timing an overflow while moving to the end of the step is reported as that body's position",
+          "[guards][event]") {
+    // The event-timed step checks the bodies in the same pass that moves them to the end of
+    // the step (as the discrete integrate() does), not in a pass of its own: it must still say
+    // which body and what.
+    WorldSettings settings;
+    settings.time_step = 1.0;
+    settings.contact_timing = ContactTiming::event;
+    std::vector<RigidBody> bodies{make_sphere(1.0, 0.5, {0.0, 0.0, 0.0}),
+                                  make_sphere(1.0, 0.5, {1.7e308, 0.0, 0.0}, {1.7e308, 0.0, 0.0})};
+    World world(bodies, settings, ResponseModel{"nan", &nan_responder, nullptr});
+    try {
+        world.step();
+        FAIL("no NonFiniteState was thrown");
+    } catch (const NonFiniteState& error) {
+        CHECK(error.body() == 1);
+        CHECK(error.quantity() == "position");
+        CHECK(error.step() == 1);
+        CHECK(error.stage() == "event: advance");
+        CHECK_THAT(std::string(error.what()), ContainsSubstring("body 1: position is not finite: (inf, 0, 0)"));
+    }
+}
+
+TEST_CASE("under event timing a responder that leaves a NaN at an impact is reported at that impact", "[guards][event]") {
+    WorldSettings settings;
+    settings.time_step = 0.1;
+    settings.contact_timing = ContactTiming::event;
+    World world(closing_pair(), settings, ResponseModel{"nan", &nan_responder, nullptr});
+    world.step();
+    world.step();
+    try {
+        world.step();  // the balls touch 0.05 s into the third step
+        FAIL("no NonFiniteState was thrown");
+    } catch (const NonFiniteState& error) {
+        CHECK(error.body() == 0);
+        CHECK(error.quantity() == "velocity");
+        CHECK(error.step() == 3);
+        CHECK(error.stage() == "event: respond");
+    }
+}
+
 TEST_CASE("the guard is on by default and can be turned off for benchmarks", "[guards]") {
     CHECK(WorldSettings{}.check_finite);
     WorldSettings settings;
