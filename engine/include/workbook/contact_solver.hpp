@@ -71,7 +71,8 @@ struct ContactSolverSettings {
     /// (soft step): in each, gravity's share, the warm start, one pass on soft contacts that
     /// push the overlap out, the move, and one rigid pass (relax) that takes that push back
     /// out of the velocities; the bounce comes in a last pass. The iteration counts, the
-    /// tolerance and PositionCorrection::fraction are then not used (the slop is).
+    /// tolerance and PositionCorrection::fraction are then not used (the slop is), and the
+    /// impulses the solver keeps (ContactSolver::impulses()) are each substep's.
     int substeps = 0;
     /// With substeps: the stiffness of a soft contact, Hz (at most a quarter of the substep
     /// rate, the highest a substep resolves), and its damping ratio. A contact then acts as a
