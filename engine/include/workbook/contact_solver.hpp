@@ -75,9 +75,11 @@ struct ContactSolverSettings {
     /// impulses the solver keeps (ContactSolver::impulses()) are each substep's.
     int substeps = 0;
     /// With substeps: the stiffness of a soft contact, Hz (at most a quarter of the substep
-    /// rate, the highest a substep resolves), and its damping ratio. A contact then acts as a
-    /// spring of that frequency for the point's effective mass, heavily damped.
+    /// rate, the highest a substep resolves). A contact then acts as a spring of that
+    /// frequency for the point's effective mass.
     double contact_hertz = 30.0;
+    /// With substeps: the damping ratio of a soft contact's spring (far above 1: it pushes
+    /// the overlap out without swinging back).
     double contact_damping_ratio = 10.0;
     /// Islands of bodies that stand still fall asleep and cost nothing until touched
     /// (workbook/sleeping.hpp).
