@@ -87,6 +87,9 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.warm_start = knobs.warm_start;
     settings.swept_spheres = knobs.swept;
     settings.contact_solver.tolerance = knobs.tolerance;
+    settings.contact_solver.substeps = knobs.substeps;
+    settings.contact_solver.contact_hertz = knobs.hertz;
+    settings.contact_solver.sleeping = knobs.sleeping;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
     const double seconds = timed_steps(steps, budget, [&world] { world.step(); });

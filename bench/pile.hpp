@@ -71,6 +71,9 @@ struct PileKnobs {
     double slop = 0.002;    ///< m
     bool swept = true;      ///< the swept test of fast spheres (WorldSettings::swept_spheres)
     double tolerance = 1e-9;  ///< m/s, ContactSolverSettings::tolerance
+    int substeps = 0;         ///< ContactSolverSettings::substeps (0: one solve a step)
+    double hertz = 30.0;      ///< ContactSolverSettings::contact_hertz
+    bool sleeping = true;     ///< ContactSolverSettings::sleeping
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

@@ -41,6 +41,25 @@ void warm_start_with_friction(RigidBody& body1, RigidBody& body2, const Contact&
     }
 }
 
+/// A soft contact over a substep h: the point acts as a spring of angular frequency w and
+/// damping ratio z for its own effective mass, solved implicitly over h. A pass then aims at
+/// the velocity bias_rate * s (s the signed gap, < 0 when overlapping), with the point's mass
+/// scaled by mass_scale, and takes back impulse_scale of the impulse accumulated so far: the
+/// three numbers of the implicit spring (Erin Catto's "soft step", Box2D v3).
+struct Softness {
+    double bias_rate = 0.0;      ///< 1/s
+    double mass_scale = 1.0;     ///< share of the rigid impulse applied
+    double impulse_scale = 0.0;  ///< share of the accumulated impulse taken back per pass
+};
+
+Softness soft_contact(double hertz, double damping_ratio, double h) {
+    const double omega = 2.0 * 3.14159265358979323846 * hertz;
+    const double a1 = 2.0 * damping_ratio + h * omega;
+    const double a2 = h * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
 }  // namespace
 
 std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
@@ -105,14 +124,21 @@ void ContactSolver::reserve(std::size_t contacts) {
     height_.reserve(contacts);
     previous_.reserve(contacts);
     current_.reserve(contacts);
+    soft_points_.reserve(contacts * max_contact_points);
 }
 
 ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
                                          const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
-                                         const PositionCorrection& knobs, double dt, const Vector3& up) {
+                                         const PositionCorrection& knobs, double dt, const Vector3& up,
+                                         const Vector3& gravity, double gravity_position_factor) {
     ContactSolverReport report;
     impulses_.assign(contacts.size(), ContactImpulses{});
     recall(contacts, settings, report);
+    if (settings.substeps > 0) {
+        solve_in_substeps(bodies, contacts, hooks, settings, knobs, dt, gravity, gravity_position_factor, report);
+        remember(contacts);
+        return report;
+    }
 
     // The velocities before the solve: its change of them also moves the bodies (below).
     saved_velocity_.resize(bodies.size());
@@ -274,6 +300,140 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     }
     remember(contacts);
     return report;
+}
+
+void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> contacts,
+                                      const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
+                                      const PositionCorrection& knobs, double dt, const Vector3& gravity,
+                                      double gravity_position_factor, ContactSolverReport& report) {
+    const int n = settings.substeps;
+    const double h = dt / n;
+    // Stiffer than a quarter of the substep rate the spring would not be resolved by a substep.
+    const Softness soft = soft_contact(std::min(settings.contact_hertz, 0.25 / h), settings.contact_damping_ratio, h);
+    const double max_push_speed = settings.max_push / dt;
+    const bool with_friction = hooks.solve_friction != nullptr;
+
+    // What each point aims for, from the velocities the world's move left (the bounce is the
+    // approach it saw), and the lever arms, fixed over the step.
+    soft_points_.resize(contacts.size() * max_contact_points);
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const Contact& contact = contacts[c];
+        const RigidBody& body1 = bodies[contact.body1];
+        const RigidBody& body2 = bodies[contact.body2];
+        hooks.prepare(body1, body2, contact, impulses_[c], settings, knobs, dt);
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            SoftPoint& sp = soft_points_[c * max_contact_points + i];
+            sp.mass = impulses_[c].points[i].mass;
+            sp.bounce = impulses_[c].points[i].bounce;
+            sp.depth = contact.points[i].penetration;
+            sp.r1 = contact.points[i].position - body1.position;
+            sp.r2 = contact.points[i].position - body2.position;
+        }
+    }
+
+    // The bodies of the contacts go back to the start of the step: the world moved them by
+    // the whole step and gave them gravity's whole kick; the substeps give both again, in
+    // n shares. Their move is kept apart (shift, turn) and made at the end; detection's
+    // points and lever arms stay where they were found.
+    const std::size_t count = bodies.size();
+    shift_.assign(count, Vector3{});
+    turn_.assign(count, Vector3{});
+    touched_.assign(count, 0);
+    for (const Contact& contact : contacts) {
+        touched_[contact.body1] = bodies[contact.body1].is_immovable() ? 0 : 1;
+        touched_[contact.body2] = bodies[contact.body2].is_immovable() ? 0 : 1;
+    }
+    const Vector3 kick = gravity * dt;
+    const Vector3 gravity_move = gravity * ((1.0 - gravity_position_factor) * dt * dt);
+    for (std::size_t b = 0; b < count; ++b) {
+        if (touched_[b] == 0) continue;
+        RigidBody& body = bodies[b];
+        shift_[b] = -(body.velocity * dt - gravity_move);
+        turn_[b] = -(body.angular_velocity * dt);
+        body.velocity -= kick;
+    }
+
+    // The signed gap of a point now (< 0: overlap): detection's depth, changed by how far
+    // the two material points have moved along the normal since.
+    auto gap = [&](const Contact& contact, std::size_t c, std::size_t i) {
+        const SoftPoint& sp = soft_points_[c * max_contact_points + i];
+        const Vector3 move1 = shift_[contact.body1] + cross(turn_[contact.body1], sp.r1);
+        const Vector3 move2 = shift_[contact.body2] + cross(turn_[contact.body2], sp.r2);
+        return -sp.depth + dot(move1 - move2, contact.normal);
+    };
+    // Sets each point's mass and target for the chapter's solve_velocity: a point apart
+    // may approach by its gap within the substep; an overlapping one is a soft contact that
+    // pushes out what exceeds the slop (`soft`, no faster than max_push a step), or, in the
+    // relax pass, a rigid one that only stops the approach.
+    auto aim = [&](const Contact& contact, std::size_t c, bool push) {
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            const SoftPoint& sp = soft_points_[c * max_contact_points + i];
+            PointImpulse& p = impulses_[c].points[i];
+            p.mass = sp.mass;
+            p.bounce = 0.0;
+            if (sp.mass == 0.0) continue;
+            const double s = gap(contact, c, i);
+            if (s > 0.0) {
+                p.bounce = -s / h;
+            } else if (push) {
+                const double bias = std::max(soft.bias_rate * std::min(s + knobs.slop, 0.0), -max_push_speed);
+                p.mass = sp.mass * soft.mass_scale;
+                p.bounce = -bias - soft.impulse_scale * p.normal / p.mass;
+            }
+        }
+    };
+    auto pass = [&](bool push) {
+        for (std::size_t c = 0; c < contacts.size(); ++c) {
+            const Contact& contact = contacts[c];
+            RigidBody& body1 = bodies[contact.body1];
+            RigidBody& body2 = bodies[contact.body2];
+            aim(contact, c, push);
+            hooks.solve_velocity(body1, body2, contact, impulses_[c]);
+            if (with_friction) hooks.solve_friction(body1, body2, contact, impulses_[c]);
+        }
+        ++report.velocity_passes;
+    };
+
+    for (int k = 0; k < n; ++k) {
+        for (std::size_t b = 0; b < count; ++b)
+            if (touched_[b] != 0) bodies[b].velocity += gravity * h;
+        // The impulses accumulated so far (the last step's at first) are each substep's.
+        if (settings.warm_start || k > 0)
+            for (std::size_t c = 0; c < contacts.size(); ++c) {
+                const Contact& contact = contacts[c];
+                if (with_friction && hooks.tangents != nullptr)
+                    warm_start_with_friction(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], hooks.tangents);
+                else
+                    hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
+            }
+        pass(true);
+        for (std::size_t b = 0; b < count; ++b) {
+            if (touched_[b] == 0) continue;
+            shift_[b] += bodies[b].velocity * h;
+            turn_[b] += bodies[b].angular_velocity * h;
+        }
+        pass(false);
+    }
+
+    // The bounce, along the normals alone, after the substeps (as friction's second phase).
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const Contact& contact = contacts[c];
+        bool bounces = false;
+        for (std::size_t i = 0; i < contact.point_count; ++i) {
+            const SoftPoint& sp = soft_points_[c * max_contact_points + i];
+            impulses_[c].points[i].mass = sp.mass;
+            impulses_[c].points[i].bounce = sp.bounce;
+            bounces = bounces || sp.bounce > 0.0;
+        }
+        if (bounces) hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
+    }
+
+    for (std::size_t b = 0; b < count; ++b) {
+        if (touched_[b] == 0) continue;
+        RigidBody& body = bodies[b];
+        if (shift_[b] != Vector3{}) body.position += shift_[b];
+        if (turn_[b] != Vector3{}) turn_by(body, turn_[b]);
+    }
 }
 
 }  // namespace workbook

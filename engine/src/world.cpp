@@ -341,7 +341,8 @@ void World::solve_contacts() {
         }
     }
     solver_report_ = contact_solver_.solve(bodies_, solved, *model_.contact_solver, solver, settings_.position_correction,
-                                           settings_.time_step, -settings_.gravity);
+                                           settings_.time_step, -settings_.gravity, settings_.gravity,
+                                           gravity_position_factor(settings_.integrator));
     if (solver.sleeping) sleeping_.fall_asleep(bodies_, solver, settings_.time_step);
     double after = 0.0;
     double sum = 0.0;
@@ -427,12 +428,13 @@ std::vector<StageUse> World::plan() const {
         std::snprintf(still, sizeof still, "%g", solver.sleep_time);
         const std::string sleeping = solver.sleeping ? std::string("; islands still for ") + still + " s sleep until touched"
                                                      : std::string("; sleeping off");
+        const std::string passes =
+            solver.substeps > 0 ? "in " + std::to_string(solver.substeps) + " substeps of soft contacts (a push and a relax pass each)"
+                                : "up to " + std::to_string(solver.velocity_iterations) + " velocity and " +
+                                      std::to_string(solver.position_iterations) + " position passes";
         stages.push_back({"solve contacts", true,
-                          "responder '" + std::string(model_.name) + "': all contacts together, up to " +
-                              std::to_string(solver.velocity_iterations) + " velocity and " +
-                              std::to_string(solver.position_iterations) + " position passes" +
-                              (solver.warm_start ? ", warm started" : ", not warm started") +
-                              sleeping});
+                          "responder '" + std::string(model_.name) + "': all contacts together, " + passes +
+                              (solver.warm_start ? ", warm started" : ", not warm started") + sleeping});
         return stages;
     }
     stages.push_back({"respond", model_.respond != nullptr,

@@ -276,3 +276,25 @@ TEST_CASE("the contact solver with sleeping allocates nothing once warm, through
     CHECK(fewest_asleep_after == 0);              // woken by the ball
     CHECK(world.sleeping().sleeping() == 6);     // asleep again
 }
+
+TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world][allocation][contact-solver][substeps]") {
+    // The scene above, solved in substeps of soft contacts: the ball's impact adds a contact
+    // within the counted steps.
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver.substeps = 4;
+    World world(std::move(bodies), settings, testing::solver_model);
+    world.step();
+    std::size_t allocated = 0;
+    {
+        const AllocationCounter counter;
+        for (int i = 0; i < 300; ++i) world.step();
+        allocated = AllocationCounter::count();
+    }
+    CHECK(allocated == 0);
+    CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
+}

@@ -157,3 +157,46 @@ TEST_CASE("A sleeping column wakes when a falling ball hits it, and the six ball
     CHECK(std::abs(ball.position.y - world.bodies()[4].position.y - 0.1) <= 0.002);
     CHECK(world.probes().kinetic() == 0.0);
 }
+
+TEST_CASE("Substeps: a resting column settles where each soft contact's spring carries the weight above it",
+          "[engine][contact-solver][substeps]") {
+    // In the soft step (ContactSolverSettings::substeps) a resting contact stops moving when
+    // its soft pass asks for no more impulse: the push bias_rate (s + slop) then balances the
+    // share impulse_scale / mass_scale of the accumulated impulse k g h (k balls of 1 kg above),
+    // so that s = -slop - k g / (m w^2), m the point's effective mass (1/2 kg between two balls,
+    // 1 kg on the ground) and w = 2 pi hertz: the spring of the contact's frequency.
+    const int n = 5;
+    ContactSolverSettings solver{.substeps = 4, .contact_hertz = 30.0, .sleeping = false};
+    World world = column(n, solver);
+    for (int i = 0; i < 600; ++i) world.step();
+    const double slop = world.settings().position_correction.slop;
+    const double w = 2.0 * 3.14159265358979323846 * 30.0;
+    auto overlap = [&](std::size_t below, std::size_t above) {
+        const RigidBody& a = world.bodies()[below];
+        const RigidBody& b = world.bodies()[above];
+        return 0.1 - (b.position.y - a.position.y);
+    };
+    // The ground carries all n balls.
+    CHECK(std::abs((0.05 - world.bodies()[0].position.y) - (slop + n * 9.81 / (1.0 * w * w))) <= 1e-6);
+    for (std::size_t k = 1; k < static_cast<std::size_t>(n); ++k) {
+        const auto carried = static_cast<double>(static_cast<std::size_t>(n) - k);  // balls above the contact of balls k-1 and k
+        CHECK(std::abs(overlap(k - 1, k) - (slop + carried * 9.81 / (0.5 * w * w))) <= 1e-6);
+    }
+    for (const RigidBody& body : world.bodies()) CHECK(std::abs(body.velocity.y) <= 1e-6);
+}
+
+TEST_CASE("Substeps: a ball falling onto the ground comes to rest on it without bouncing (e = 0)",
+          "[engine][contact-solver][substeps]") {
+    std::vector<RigidBody> bodies{make_sphere(1.0, 0.05, {0, 1.0, 0}), make_immovable_plane({0, 1, 0}, {0, 0, 0})};
+    bodies[0].restitution = 0.0;
+    bodies[1].restitution = 0.0;
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver = {.substeps = 4, .sleeping = false};
+    World world(std::move(bodies), settings, model);
+    for (int i = 0; i < 120; ++i) world.step();
+    // At rest on a soft contact: overlap slop + g / w^2 (1 kg, 30 Hz), 1.28 mm.
+    const double w = 2.0 * 3.14159265358979323846 * 30.0;
+    CHECK(std::abs((0.05 - world.bodies()[0].position.y) - (0.001 + 9.81 / (w * w))) <= 1e-6);
+    CHECK(std::abs(world.bodies()[0].velocity.y) <= 1e-6);
+}

@@ -66,6 +66,21 @@ struct ContactSolverSettings {
     /// Most overlap a point's bias asks to remove in one step, m: a deep overlap pushed out at
     /// once would push bodies through their neighbours.
     double max_push = 0.005;
+    /// 0: the scheme above, one solve per step (rigid passes to the tolerance, then the
+    /// overlap on pseudo-velocities). n > 0: the step is solved in n substeps of dt / n
+    /// (soft step): in each, gravity's share, the warm start, one pass on soft contacts that
+    /// push the overlap out, the move, and one rigid pass (relax) that takes that push back
+    /// out of the velocities; the bounce comes in a last pass. The iteration counts, the
+    /// tolerance and PositionCorrection::fraction are then not used (the slop is), and the
+    /// impulses the solver keeps (ContactSolver::impulses()) are each substep's.
+    int substeps = 0;
+    /// With substeps: the stiffness of a soft contact, Hz (at most a quarter of the substep
+    /// rate, the highest a substep resolves). A contact then acts as a spring of that
+    /// frequency for the point's effective mass.
+    double contact_hertz = 30.0;
+    /// With substeps: the damping ratio of a soft contact's spring (far above 1: it pushes
+    /// the overlap out without swinging back).
+    double contact_damping_ratio = 10.0;
     /// Islands of bodies that stand still fall asleep and cost nothing until touched
     /// (workbook/sleeping.hpp).
     bool sleeping = true;
@@ -129,9 +144,15 @@ public:
     ///     move), and each point's depth is estimated after that move;
     ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
     ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
+    ///
+    /// With settings.substeps > 0 the step is solved in substeps instead (see
+    /// ContactSolverSettings::substeps), which needs how the world moved the bodies before the
+    /// solve: `gravity`, added to every velocity over dt, and `gravity_position_factor`, the
+    /// share of gravity's kick that was in the move (1 for semi-implicit Euler). The bodies of
+    /// the contacts then move as if gravity had come in dt / n at a time.
     ContactSolverReport solve(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
                               const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
-                              const Vector3& up);
+                              const Vector3& up, const Vector3& gravity = {}, double gravity_position_factor = 1.0);
 
     /// The impulses of the last solve, one per contact, in the contacts' order.
     [[nodiscard]] std::span<const ContactImpulses> impulses() const { return impulses_; }
@@ -156,7 +177,19 @@ private:
         std::array<std::array<double, 2>, max_contact_points> friction_impulses{};
         std::uint8_t point_count = 0;
     };
+    /// What a substep needs of one contact point: the chapter's mass and bounce (restored
+    /// after the substeps change them), the depth found by detection and the lever arms.
+    struct SoftPoint {
+        double mass = 0.0;
+        double bounce = 0.0;
+        double depth = 0.0;
+        Vector3 r1{};
+        Vector3 r2{};
+    };
     /// \endcond
+    void solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                           const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
+                           const Vector3& gravity, double gravity_position_factor, ContactSolverReport& report);
     void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
     void remember(std::span<const Contact> contacts);
 
@@ -169,6 +202,10 @@ private:
     std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
     std::vector<Vector3> saved_velocity_;
     std::vector<Vector3> saved_angular_velocity_;
+    std::vector<SoftPoint> soft_points_;  ///< max_contact_points per contact, in the contacts' order
+    std::vector<Vector3> shift_;          ///< each body's move since detection, within the substeps
+    std::vector<Vector3> turn_;           ///< each body's turn since detection, within the substeps
+    std::vector<std::uint8_t> touched_;   ///< 1 for a movable body of some contact
 };
 
 }  // namespace workbook
