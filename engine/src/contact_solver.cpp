@@ -130,12 +130,13 @@ void ContactSolver::reserve(std::size_t contacts) {
 ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
                                          const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
                                          const PositionCorrection& knobs, double dt, const Vector3& up,
-                                         const Vector3& gravity, double gravity_position_factor) {
+                                         const Vector3& gravity, double gravity_position_factor,
+                                         std::span<const std::uint8_t> woken) {
     ContactSolverReport report;
     impulses_.assign(contacts.size(), ContactImpulses{});
     recall(contacts, settings, report);
     if (settings.substeps > 0) {
-        solve_in_substeps(bodies, contacts, hooks, settings, knobs, dt, gravity, gravity_position_factor, report);
+        solve_in_substeps(bodies, contacts, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
         remember(contacts);
         return report;
     }
@@ -305,7 +306,8 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
 void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> contacts,
                                       const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
                                       const PositionCorrection& knobs, double dt, const Vector3& gravity,
-                                      double gravity_position_factor, ContactSolverReport& report) {
+                                      double gravity_position_factor, std::span<const std::uint8_t> woken,
+                                      ContactSolverReport& report) {
     const int n = settings.substeps;
     const double h = dt / n;
     // Stiffer than a quarter of the substep rate the spring would not be resolved by a substep.
@@ -334,7 +336,8 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     // The bodies of the contacts go back to the start of the step: the world moved them by
     // the whole step and gave them gravity's whole kick; the substeps give both again, in
     // n shares. Their move is kept apart (shift, turn) and made at the end; detection's
-    // points and lever arms stay where they were found.
+    // points and lever arms stay where they were found. A body that woke after the move got
+    // neither, and starts where it stands.
     const std::size_t count = bodies.size();
     shift_.assign(count, Vector3{});
     turn_.assign(count, Vector3{});
@@ -346,7 +349,7 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     const Vector3 kick = gravity * dt;
     const Vector3 gravity_move = gravity * ((1.0 - gravity_position_factor) * dt * dt);
     for (std::size_t b = 0; b < count; ++b) {
-        if (touched_[b] == 0) continue;
+        if (touched_[b] == 0 || (!woken.empty() && woken[b] != 0)) continue;
         RigidBody& body = bodies[b];
         shift_[b] = -(body.velocity * dt - gravity_move);
         turn_[b] = -(body.angular_velocity * dt);

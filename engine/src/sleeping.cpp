@@ -31,6 +31,8 @@ void Sleeping::size_for(std::size_t count) {
     asleep_.assign(count, 0);
     island_awake_.assign(count, 0);
     island_still_.assign(count, 0.0);
+    woken_.assign(count, 0);
+    woken_count_ = 0;
     sleeping_ = 0;
 }
 
@@ -50,6 +52,10 @@ void Sleeping::wake_touched(std::span<RigidBody> bodies, std::span<const Contact
         const std::uint32_t a = root(contact.body1), b = root(contact.body2);
         if (a != b) parent_[std::max(a, b)] = std::min(a, b);
     }
+    if (woken_count_ > 0) {
+        std::fill(woken_.begin(), woken_.end(), std::uint8_t{0});
+        woken_count_ = 0;
+    }
     if (sleeping_ == 0) return;
     std::fill(island_awake_.begin(), island_awake_.end(), std::uint8_t{0});
     for (std::uint32_t i = 0; i < parent_.size(); ++i)
@@ -63,6 +69,8 @@ void Sleeping::wake_touched(std::span<RigidBody> bodies, std::span<const Contact
             asleep_[i] = 0;
             still_[i] = 0.0;
             --sleeping_;
+            woken_[i] = 1;
+            ++woken_count_;
         }
     }
 }

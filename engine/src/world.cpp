@@ -342,7 +342,8 @@ void World::solve_contacts() {
     }
     solver_report_ = contact_solver_.solve(bodies_, solved, *model_.contact_solver, solver, settings_.position_correction,
                                            settings_.time_step, -settings_.gravity, settings_.gravity,
-                                           gravity_position_factor(settings_.integrator));
+                                           gravity_position_factor(settings_.integrator),
+                                           solver.sleeping ? sleeping_.woken() : std::span<const std::uint8_t>{});
     if (solver.sleeping) sleeping_.fall_asleep(bodies_, solver, settings_.time_step);
     double after = 0.0;
     double sum = 0.0;

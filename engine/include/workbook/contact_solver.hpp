@@ -149,10 +149,13 @@ public:
     /// ContactSolverSettings::substeps), which needs how the world moved the bodies before the
     /// solve: `gravity`, added to every velocity over dt, and `gravity_position_factor`, the
     /// share of gravity's kick that was in the move (1 for semi-implicit Euler). The bodies of
-    /// the contacts then move as if gravity had come in dt / n at a time.
+    /// the contacts then move as if gravity had come in dt / n at a time. `woken` (empty, or
+    /// one flag per body) marks the bodies that slept through that move and woke after it:
+    /// they got neither gravity nor a move, so the substeps start them where they stand.
     ContactSolverReport solve(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
                               const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
-                              const Vector3& up, const Vector3& gravity = {}, double gravity_position_factor = 1.0);
+                              const Vector3& up, const Vector3& gravity = {}, double gravity_position_factor = 1.0,
+                              std::span<const std::uint8_t> woken = {});
 
     /// The impulses of the last solve, one per contact, in the contacts' order.
     [[nodiscard]] std::span<const ContactImpulses> impulses() const { return impulses_; }
@@ -189,7 +192,8 @@ private:
     /// \endcond
     void solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
                            const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
-                           const Vector3& gravity, double gravity_position_factor, ContactSolverReport& report);
+                           const Vector3& gravity, double gravity_position_factor, std::span<const std::uint8_t> woken,
+                           ContactSolverReport& report);
     void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
     void remember(std::span<const Contact> contacts);
 

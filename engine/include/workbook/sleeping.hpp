@@ -39,6 +39,12 @@ public:
     /// island all of whose bodies have been still for `settings.sleep_time`.
     void fall_asleep(std::span<RigidBody> bodies, const ContactSolverSettings& settings, double dt);
 
+    /// The bodies the last wake_touched() woke (one flag per body), or an empty span when it
+    /// woke none: they slept through this step's move, so it gave them no gravity.
+    [[nodiscard]] std::span<const std::uint8_t> woken() const {
+        return woken_count_ > 0 ? std::span<const std::uint8_t>(woken_) : std::span<const std::uint8_t>{};
+    }
+
     /// Wakes body `i` (its island wakes at the next wake_touched()).
     void wake(std::size_t i);
 
@@ -55,6 +61,8 @@ private:
     std::vector<std::uint8_t> island_awake_;  ///< per root: some body of the island is awake
     std::vector<double> island_still_;      ///< per root: the shortest still time of its bodies
     std::size_t sleeping_ = 0;
+    std::vector<std::uint8_t> woken_;       ///< 1 for a body the last wake_touched() woke
+    std::size_t woken_count_ = 0;
 };
 
 }  // namespace workbook
