@@ -116,10 +116,15 @@ double sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vecto
     const Vector3 d = s1.position - s2.position;
     const Vector3 u = s1.velocity - s2.velocity;
     const Vector3 a = (acceleration_of(s1, gravity) - acceleration_of(s2, gravity)) * k;
-    // Two cheap answers first, without a square root; most pairs of a step end here. A pair
+    // Cheap answers first, without a square root; most pairs of a step end here. A pair
     // that does not move relative to itself keeps its distance (a row of touching balls, two
     // balls falling together) ...
     if (u == Vector3{} && a == Vector3{}) return no_impact;
+    // ... two that share their acceleration (both falling, or both pinned) and are not closing
+    // (d . u >= 0) only draw apart, |d + u t|^2 grows with t: every answer below would be
+    // no_impact, touching or not. In a pile half the neighbours of a body that just bounced
+    // are moving away from it ...
+    if (a == Vector3{} && dot(d, u) >= 0.0) return no_impact;
     const double radii = s1.radius + s2.radius;
     const double limit2 = limit * limit;
     // ... and the centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
