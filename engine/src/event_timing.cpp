@@ -124,17 +124,26 @@ double sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vecto
     // (d . u >= 0) only draw apart, |d + u t|^2 grows with t: every answer below would be
     // no_impact, touching or not. In a pile half the neighbours of a body that just bounced
     // are moving away from it ...
-    if (a == Vector3{} && dot(d, u) >= 0.0) return no_impact;
+    const double approach = dot(d, u);
+    if (a == Vector3{} && approach >= 0.0) return no_impact;
     const double radii = s1.radius + s2.radius;
+    // ... and two such that are closing stay at |d + u t|^2 >= |d|^2 + 2 t (d . u) >=
+    // |d|^2 + 2 limit (d . u) over [0, limit]: when that is clear of the radii by more than
+    // rounding (a relative conservative_slack, far wider than the touching band), they cannot
+    // touch within the limit ...
+    if (a == Vector3{}) {
+        const double nearest_squared = length_squared(d) + 2.0 * limit * approach;
+        const double scale = length_squared(d) - 2.0 * limit * approach + radii * radii;
+        if (nearest_squared > radii * radii + tolerances::conservative_slack * scale) return no_impact;
+    }
     const double limit2 = limit * limit;
-    // ... and the centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
+    // ... Otherwise the centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
     // reach^2 <= 2 (|u|^2 limit^2 + |a|^2 limit^4); centres more than 2 max(radii, reach) apart
     // cannot come within the radii.
     const double reach_squared = 2.0 * (length_squared(u) * limit2 + length_squared(a) * (limit2 * limit2));
     if (length_squared(d) > 4.0 * std::max(radii * radii, reach_squared)) return no_impact;
     const double distance = length(d);
     const double gap = distance - radii;
-    const double approach = dot(d, u);
     if (std::abs(gap) <= touching_tolerance * (distance + radii)) {
         if (approach < 0.0) return 0.0;
         if (a == Vector3{}) return no_impact;
