@@ -116,6 +116,21 @@ void ContactSolver::remember(std::span<const Contact> contacts) {
     std::swap(previous_, current_);
 }
 
+void ContactSolver::keep_for_waking(std::span<const Contact> contacts) {
+    if (contacts.empty()) return;
+    // remember() left this step's solved pairs in previous_, sorted; the pairs kept here are
+    // looked up in current_, which still holds the step before (it is the scratch remember()
+    // swapped out), and appended; then previous_ is sorted again.
+    const std::size_t solved = previous_.size();
+    for (const Contact& contact : contacts) {
+        const auto found = std::lower_bound(current_.begin(), current_.end(), pair_key(contact),
+                                            [](const Remembered& r, std::uint64_t key) { return r.pair < key; });
+        if (found != current_.end() && found->pair == pair_key(contact)) previous_.push_back(*found);
+    }
+    if (previous_.size() > solved)
+        std::sort(previous_.begin(), previous_.end(), [](const Remembered& a, const Remembered& b) { return a.pair < b.pair; });
+}
+
 void ContactSolver::reserve(std::size_t contacts) {
     if (impulses_.capacity() >= contacts) return;
     impulses_.reserve(contacts);

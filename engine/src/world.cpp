@@ -325,6 +325,8 @@ void World::solve_contacts() {
     if (solver.sleeping) {
         // Sized with the contacts, in the steps where they grow: a warm step allocates nothing.
         if (awake_contacts_.capacity() < contacts_.capacity()) awake_contacts_.reserve(contacts_.capacity());
+        if (asleep_contacts_.capacity() < contacts_.capacity()) asleep_contacts_.reserve(contacts_.capacity());
+        asleep_contacts_.clear();
         sleeping_.wake_touched(bodies_, contacts_);
         if (sleeping_.sleeping() > 0) {
             // A sleeping island's contacts are left out (an awake body's contact with a
@@ -336,6 +338,8 @@ void World::solve_contacts() {
                 if ((!body1.is_immovable() && !sleeping_.asleep(contact.body1)) ||
                     (!body2.is_immovable() && !sleeping_.asleep(contact.body2)))
                     awake_contacts_.push_back(contact);
+                else
+                    asleep_contacts_.push_back(contact);
             }
             solved = awake_contacts_;
         }
@@ -344,6 +348,7 @@ void World::solve_contacts() {
                                            settings_.time_step, -settings_.gravity, settings_.gravity,
                                            gravity_position_factor(settings_.integrator),
                                            solver.sleeping ? sleeping_.woken() : std::span<const std::uint8_t>{});
+    contact_solver_.keep_for_waking(asleep_contacts_);
     if (solver.sleeping) sleeping_.fall_asleep(bodies_, solver, settings_.time_step);
     double after = 0.0;
     double sum = 0.0;

@@ -151,6 +151,9 @@ TEST_CASE("A sleeping column wakes when a falling ball hits it, and the six ball
     REQUIRE(touched);
     CHECK(world.sleeping().sleeping() == 0);
     CHECK(world.contact_solver().impulses().size() >= 6);
+    // The column wakes with the impulses that held it when it fell asleep: its five contacts
+    // (the ground's and four between balls) are warm started; only the new one starts cold.
+    CHECK(world.contact_solver_report().warm_started_points == 5);
     // Then all six rest and sleep, the dropped ball on top of the column.
     for (; step < 1200 && world.sleeping().sleeping() < 6; ++step) world.step();
     CHECK(world.sleeping().sleeping() == 6);

@@ -157,6 +157,13 @@ public:
                               const Vector3& up, const Vector3& gravity = {}, double gravity_position_factor = 1.0,
                               std::span<const std::uint8_t> woken = {});
 
+    /// Keeps, for warm starting, the impulses last remembered for the pairs of `contacts`:
+    /// the contacts of sleeping islands, which the world leaves out of solve(). An island
+    /// then wakes with the impulses that held it when it fell asleep, instead of cold (a
+    /// woken pile that starts from zero impulses sinks into itself for a few steps).
+    /// Call it after solve(), with that step's sleeping contacts.
+    void keep_for_waking(std::span<const Contact> contacts);
+
     /// The impulses of the last solve, one per contact, in the contacts' order.
     [[nodiscard]] std::span<const ContactImpulses> impulses() const { return impulses_; }
 

@@ -239,6 +239,8 @@ private:
     Sleeping sleeping_;
     /// The contacts the solver gets while some bodies sleep: those with an awake movable body.
     std::vector<Contact> awake_contacts_;
+    /// The others: a sleeping island's contacts, whose impulses the solver keeps for its waking.
+    std::vector<Contact> asleep_contacts_;
 };
 
 }  // namespace workbook
