@@ -316,7 +316,7 @@ TEST_CASE("the friction model's warm start does not depend on chapter 5's warm_s
 }
 
 TEST_CASE("the stack of ten boxes with friction 0.5 rests for the whole minute", "[friction]") {
-    const Scene scene = friction_scene("stack-of-10-boxes");
+    const Scene scene = friction_scene("stack-of-10-boxes-with-friction");
     // A minute of ten boxes is some 20 times slower under the sanitizers: the dev build judges it.
     if (testing::under_sanitizers && testing::is_heavy(scene)) return;
     World world = world_of(scene);

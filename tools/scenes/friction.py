@@ -129,7 +129,7 @@ def main():
     stack.update({"time_step": 1 / 60, "position_correction": {"fraction": 0.5, "slop": 0.002}})
     stack["contact_solver"] = {"velocity_iterations": 300}
     stack["bodies"] = stack.pop("bodies")  # the bodies last, as in every scene file
-    scenes["stack-of-10-boxes"] = stack
+    scenes["stack-of-10-boxes-with-friction"] = stack
     OUT.mkdir(parents=True, exist_ok=True)
     for name, content in scenes.items():
         (OUT / f"{name}.json").write_text(json.dumps(content, indent=1) + "\n")
