@@ -182,10 +182,12 @@ def curves(datasets, series, factor, axes=""):
     return clauses
 
 
-def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=(), slop=None):
+def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=(), slop=None, moving_mass=None):
     """The multiplot body (everything after `set output`) for one scene. `stops` lists
     (whose curves, time) where a run's values stopped being finite: marked on both panels.
-    `slop` (m): drawn across the penetration panel, where there is one."""
+    `slop` (m): drawn across the penetration panel, where there is one. `moving_mass` (kg, the
+    movable bodies' total) gives momentum its scale: the momentum the scene's largest energy
+    would be if it were all kinetic, sqrt(2 M E)."""
     main = (reference or student)[1]
     everything = [d for _, d, _, _ in datasets]
     hit = None if responder in RESTING else impact(main)
@@ -198,17 +200,23 @@ def gnuplot_panels(title, responder, datasets, reference, student, t_end, stops=
                        "font note_font tc rgb c_drop noenhanced"]
 
     e_scale = largest(everything, [c for c, _, _, _ in ENERGY])
-    p_scale = largest(everything, [c for c, _, _ in MOMENTUM])
+    # A resting scene's momentum is rounding (1e-9 kg m/s under 100 J): judged against its own
+    # largest value it would fill the panel with noise, so it is judged against the momentum
+    # the scene's energy could give its mass.
+    p_scale = max(largest(everything, [c for c, _, _ in MOMENTUM]), math.sqrt(2.0 * moving_mass * e_scale) if moving_mass else 0.0)
     energy = [(c, t, s) for c, t, s, always in ENERGY if always or significant(everything, c, e_scale)]
-    momentum = [(c, t, s) for c, t, s in MOMENTUM if significant(everything, c, p_scale)] or [MOMENTUM[0]]
+    momentum = [(c, t, s) for c, t, s in MOMENTUM if significant(everything, c, p_scale)]
+    # Nothing above rounding: every component is drawn, flat at zero on the scene's own scale.
+    p_range = [-p_scale, p_scale] if not momentum and p_scale > 0.0 else []
+    momentum = momentum or MOMENTUM
     # Angular momentum is compared with |p| times one metre (or with zero when nothing moves).
     angular = [(c, t, s) for c, t, s in ANGULAR if significant(everything, c, p_scale * 1.0)]
 
     e_factor, e_unit = unit_scale([v for d in everything for c, _, _ in energy for v in d[c]], ["J", "kJ", "MJ"])
-    p_factor, p_unit = unit_scale([v for d in everything for c, _, _ in momentum for v in d[c]],
+    p_factor, p_unit = unit_scale([v for d in everything for c, _, _ in momentum for v in d[c]] + p_range,
                                   ["kg m/s", "10^3 kg m/s", "10^6 kg m/s"])
     e_lo, e_hi = axis_range([e_factor * v for d in everything for c, _, _ in energy for v in d[c]], top_room=0.55)
-    p_lo, p_hi = axis_range([p_factor * v for d in everything for c, _, _ in momentum for v in d[c]])
+    p_lo, p_hi = axis_range([p_factor * v for d in everything for c, _, _ in momentum for v in d[c]] + [p_factor * v for v in p_range])
 
     depth_panel = responder in DEPTH_PANEL
     g = [f"set multiplot layout 1,{3 if depth_panel else 2} title {quote(title)} font title_font noenhanced",
@@ -403,7 +411,9 @@ def draw(scene, out_dir, stem, reference, student, scratch):
     datasets = ([(reference[0], reference[1], False, True)] if reference else []) + \
                ([(student[0], student[1], bool(reference), not reference)] if student else [])
     slop = description.get("position_correction", {}).get("slop") if responder in RESTING else None
-    body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops, slop)
+    moving_mass = sum(b.get("mass", 0.0) for b in description.get("bodies", [])
+                      if not b.get("immovable") and not b.get("kinematic"))
+    body = gnuplot_panels(title, responder, datasets, reference, student, t_end, stops, slop, moving_mass)
     render(body, out_dir, stem, scene.name)
     return notes
 

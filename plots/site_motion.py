@@ -16,6 +16,7 @@ import shutil
 from pathlib import Path
 
 PLOTS = Path(__file__).resolve().parent
+SOURCE = PLOTS.parent
 
 
 def main():
@@ -31,6 +32,13 @@ def main():
     for chapter in args.chapters:
         files = sorted(p for p in (args.figures / chapter).glob(f"*{args.suffix}.player.js")
                        if p.name.count(".") == args.suffix.count(".") + 2)
+        # A build folder keeps what it once drew: a scene renamed or removed since would show
+        # in the player twice, or after it was gone. Only the chapter's scenes of today count.
+        scenes = SOURCE / "chapters" / chapter / "scenes"
+        stale = [p for p in files if not (scenes / (p.name[:-len(args.suffix + ".player.js")] + ".json")).is_file()]
+        for p in stale:
+            print(f"site: left out {p.name}: no scene {chapter}/{p.name[:-len(args.suffix + '.player.js')]} any more")
+        files = [p for p in files if p not in stale]
         text, figures = "".join(p.read_text() for p in files), 0
         for p in files:
             scene = p.name[:-len(args.suffix + ".player.js")]
