@@ -391,7 +391,7 @@ class EventLoop {
 public:
     EventLoop(std::span<RigidBody> bodies, const EventMotion& motion, EventScratch& scratch)
         : bodies_(bodies), scratch_(scratch), gravity_(motion.gravity), k_(motion.k), dt_(motion.dt),
-          count_(static_cast<std::uint32_t>(bodies.size())) {}
+          gravity_reach_((std::abs(motion.k) + 1.0) * length(motion.gravity)), count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
@@ -534,8 +534,7 @@ private:
     /// being split into pieces at its events (each piece starts with the velocity gravity gave).
     [[nodiscard]] double can_move(std::uint32_t i, double left) const {
         const double speed_part = length(scratch_.state[i].velocity) * left;
-        return scratch_.roles[i].immovable ? speed_part
-                                           : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+        return scratch_.roles[i].immovable ? speed_part : speed_part + gravity_reach_ * left * left;
     }
 
     /// True when body b is among body a's candidates already (its lists are short: the
@@ -666,6 +665,9 @@ private:
     Vector3 gravity_;
     double k_;
     double dt_;
+    /// (|k| + 1) |g|, for can_move(): taken once per step rather than once per call (a square
+    /// root that the compiler cannot hoist out of the loops that write the scratch arrays).
+    double gravity_reach_;
     std::uint32_t count_;
 };
 
