@@ -399,7 +399,7 @@ public:
         s.state.resize(count_);
         s.roles.resize(count_);
         s.events.assign(count_, 0);
-        s.reach.assign(count_, 0.0);
+        s.reach.resize(count_);
         s.extra.clear();
         s.extra_head.assign(count_, no_extra);
         s.extra_nodes.clear();
@@ -413,8 +413,8 @@ public:
         for (std::uint32_t i = 0; i < count_; ++i) {
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
-            s.reach[i] = can_move(i, dt_);
-            s.proxies.add(body, i, 0.0, {}, s.reach[i]);
+            s.reach[i] = {body.position, can_move(i, dt_)};
+            s.proxies.add(body, i, 0.0, {}, s.reach[i].reach);
             if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
@@ -626,22 +626,20 @@ private:
 
     /// How far body i, as it now moves, may get from where it started the step by the end.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
-        const GridProxy& p = scratch_.proxies.proxies[i];
-        return length(scratch_.state[i].position - Vector3{p.x, p.y, p.z}) + can_move(i, dt_ - t);
+        return length(scratch_.state[i].position - scratch_.reach[i].origin) + can_move(i, dt_ - t);
     }
 
     /// True when body i may leave the widened sphere its candidates were found for.
     [[nodiscard]] bool outran(std::uint32_t i, double t) const {
-        return !scratch_.roles[i].immovable && needs_reach(i, t) > scratch_.reach[i];
+        return !scratch_.roles[i].immovable && needs_reach(i, t) > scratch_.reach[i].reach;
     }
 
     /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
     /// the step, comes within `radius` of i's centre then.
     void add_near(std::uint32_t i, double radius) {
         EventScratch& s = scratch_;
-        const GridProxy& p = s.proxies.proxies[i];
         s.near.clear();
-        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, radius, s.near);
+        s.broad_phase.bodies_near(s.proxies, s.reach[i].origin, radius, s.near);
         for (const std::uint32_t j : s.near)
             if (j != i && !(s.roles[i].immovable && s.roles[j].immovable)) add_candidate(i, j);
     }
@@ -656,8 +654,8 @@ private:
     /// exactly what it needs, searched again at the next speed-up, was no faster than a tenth.
     void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
-        s.reach[i] = 1.1 * needs_reach(i, t);
-        add_near(i, s.state[i].bounding_radius + s.reach[i]);
+        s.reach[i].reach = 1.1 * needs_reach(i, t);
+        add_near(i, s.state[i].bounding_radius + s.reach[i].reach);
     }
 
     std::span<RigidBody> bodies_;
