@@ -77,7 +77,8 @@ void World::integrate_impact_to_impact() {
         guard("event: advance");
         return;
     }
-    impacts_ = move_impact_to_impact(bodies_, motion, model_, {settings_.check_finite, body_names_, steps_ + 1}, event_scratch_);
+    impacts_ = move_impact_to_impact(bodies_, motion, model_, {settings_.check_finite, body_names_, steps_ + 1}, event_scratch_,
+                                     shortcuts_.response_energy_probe);
     impacts_fresh_ = true;
 }
 

@@ -138,7 +138,7 @@ struct FiniteCheck {
 
 /// What move_impact_to_impact() leaves for the rest of the step.
 struct ImpactsAnswered {
-    double energy_change = 0.0;            ///< kinetic energy the responses at impacts changed, J
+    double energy_change = 0.0;            ///< kinetic energy the responses at impacts changed, J (0 unless measured)
     /// Every pair that overlaps at the end of the step, each once, sorted by (first, second),
     /// found among the pairs whose bodies came near each other (a view of the scratch, valid
     /// until the next step).
@@ -153,9 +153,10 @@ struct ImpactsAnswered {
 /// is the discrete stages' to answer, among ImpactsAnswered::overlapping_pairs. A step handles at
 /// most a bounded number of events (two per body, and at most max_events_per_body for any one
 /// body), after which the rest of it is discrete: a ball coming to rest on the ground bounces
-/// infinitely often in a finite time, and no event loop can follow that.
+/// infinitely often in a finite time, and no event loop can follow that. The energy the
+/// responses change is measured only when `measure_energy` (Shortcuts::response_energy_probe).
 ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMotion& motion, const ResponseModel& model,
-                                      const FiniteCheck& check, EventScratch& scratch);
+                                      const FiniteCheck& check, EventScratch& scratch, bool measure_energy = true);
 
 /// The same without a responder: nothing changes at an impact, so the bodies pass as the
 /// discrete loop would and there are no events to follow; each moves the whole step.
