@@ -405,10 +405,17 @@ public:
         s.extra.clear();
         s.extra_head.assign(count_, no_extra);
         s.extra_nodes.clear();
+        // Room for one overlapping pair per body from the start, as the broad phase keeps for
+        // its pairs, and for four times the last step's when that used half of it: a gas ends
+        // most steps with none and a pile with about two per body, and growing only at a new
+        // largest count would allocate now and then long after the scene warmed up.
+        if (s.all_pairs.capacity() < count_) s.all_pairs.reserve(count_);
+        if (s.all_pairs.capacity() < 2 * s.all_pairs.size()) s.all_pairs.reserve(4 * s.all_pairs.size());
         s.heap.clear();
         s.pending.clear();
         s.bucket_head.assign(bucket_count_, no_node);
         opened_ = 0;
+        most_in_heap_ = 0;
         s.contacts.clear();
         s.moving_planes.clear();
         // Each body's bounding sphere widened by how far it can move this step at the velocity
@@ -458,6 +465,17 @@ public:
             if (opened_ == bucket_count_) return std::nullopt;
             open_slice();
         }
+    }
+
+    /// After the loop: room for at least twice what this step queued (four times when it
+    /// grows), so that a warm step allocates nothing. How many events a step queues, and how
+    /// many its slices hold at once, change from step to step (a slice holds a handful):
+    /// growing only at a new largest count would allocate now and then long after the scene
+    /// warmed up.
+    void keep_room() {
+        EventScratch& s = scratch_;
+        if (s.pending.capacity() < 2 * s.pending.size()) s.pending.reserve(4 * s.pending.size());
+        if (s.heap.capacity() < 2 * most_in_heap_) s.heap.reserve(4 * most_in_heap_);
     }
 
     /// Advances body i to time t within the step.
@@ -599,6 +617,7 @@ private:
         if (slice < opened_) {
             s.heap.push_back(e);
             std::push_heap(s.heap.begin(), s.heap.end(), Later{});
+            most_in_heap_ = std::max(most_in_heap_, s.heap.size());
             return;
         }
         s.pending.push_back({e, s.bucket_head[slice]});
@@ -617,6 +636,7 @@ private:
         EventScratch& s = scratch_;
         for (std::uint32_t n = s.bucket_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
         std::make_heap(s.heap.begin(), s.heap.end(), Later{});
+        most_in_heap_ = std::max(most_in_heap_, s.heap.size());
         ++opened_;
     }
 
@@ -708,6 +728,7 @@ private:
     std::uint32_t bucket_count_;
     double slices_per_second_;   ///< bucket_count_ / dt
     std::uint32_t opened_ = 0;   ///< the slices whose events are in the heap (the first ones)
+    std::size_t most_in_heap_ = 0;  ///< the most events the heap held at once this step
     static constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t count_;
 };
@@ -759,6 +780,7 @@ ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMo
         if (!event) break;
         energy_change += answer_impact(bodies, *event, loop, model, check, scratch, measure_energy);
     }
+    loop.keep_room();
     const double poisoned = loop.finish();  // every body to the end of the step
     if (check.on && !(poisoned == 0.0)) check_finite(bodies, check.names, check.step, "event: advance");
     return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};
