@@ -392,8 +392,8 @@ public:
     EventLoop(std::span<RigidBody> bodies, const EventMotion& motion, EventScratch& scratch)
         : bodies_(bodies), scratch_(scratch), gravity_(motion.gravity), k_(motion.k), dt_(motion.dt),
           gravity_reach_((std::abs(motion.k) + 1.0) * length(motion.gravity)),
-          bucket_count_(std::max<std::uint32_t>(1, static_cast<std::uint32_t>(bodies.size() / 8))),
-          slices_per_second_(bucket_count_ / motion.dt), count_(static_cast<std::uint32_t>(bodies.size())) {}
+          slice_count_(std::max<std::uint32_t>(1, static_cast<std::uint32_t>(bodies.size() / 8))),
+          slices_per_second_(slice_count_ / motion.dt), count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
@@ -413,7 +413,7 @@ public:
         if (s.all_pairs.capacity() < 2 * s.all_pairs.size()) s.all_pairs.reserve(4 * s.all_pairs.size());
         s.heap.clear();
         s.pending.clear();
-        s.bucket_head.assign(bucket_count_, no_node);
+        s.slice_head.assign(slice_count_, no_node);
         opened_ = 0;
         most_in_heap_ = 0;
         s.contacts.clear();
@@ -462,7 +462,7 @@ public:
                 s.heap.pop_back();
                 if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
             }
-            if (opened_ == bucket_count_) return std::nullopt;
+            if (opened_ == slice_count_) return std::nullopt;
             open_slice();
         }
     }
@@ -619,21 +619,21 @@ private:
             most_in_heap_ = std::max(most_in_heap_, s.heap.size());
             return;
         }
-        s.pending.push_back({e, s.bucket_head[slice]});
-        s.bucket_head[slice] = static_cast<std::uint32_t>(s.pending.size() - 1);
+        s.pending.push_back({e, s.slice_head[slice]});
+        s.slice_head[slice] = static_cast<std::uint32_t>(s.pending.size() - 1);
     }
 
     /// The slice of the step time t falls in: floor(t / slice width), the last for t = dt
     /// (and for anything rounding puts beyond it, or a NaN). Never smaller for a later time.
     [[nodiscard]] std::uint32_t slice_of(double t) const {
         const double x = t * slices_per_second_;
-        return x < static_cast<double>(bucket_count_ - 1) ? static_cast<std::uint32_t>(x) : bucket_count_ - 1;
+        return x < static_cast<double>(slice_count_ - 1) ? static_cast<std::uint32_t>(x) : slice_count_ - 1;
     }
 
     /// Moves the next slice's events into the (empty) heap.
     void open_slice() {
         EventScratch& s = scratch_;
-        for (std::uint32_t n = s.bucket_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
+        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
         std::make_heap(s.heap.begin(), s.heap.end(), Later{});
         most_in_heap_ = std::max(most_in_heap_, s.heap.size());
         ++opened_;
@@ -724,8 +724,8 @@ private:
     double gravity_reach_;
     /// How many slices the step is cut into for the queue of events: one per 8 bodies, so
     /// that a slice holds a few events in a pile (0.65 per body and step) and fewer in a gas.
-    std::uint32_t bucket_count_;
-    double slices_per_second_;   ///< bucket_count_ / dt
+    std::uint32_t slice_count_;
+    double slices_per_second_;   ///< slice_count_ / dt
     std::uint32_t opened_ = 0;   ///< the slices whose events are in the heap (the first ones)
     std::size_t most_in_heap_ = 0;  ///< the most events the heap held at once this step
     static constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();

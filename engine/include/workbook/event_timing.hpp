@@ -17,8 +17,8 @@
 /// Why it scales: the pairs that may meet within a step are found once per step by the broad
 /// phase, each body's bounding sphere widened by how far it may move in the step; each body
 /// keeps the time its state refers to and is advanced only when it takes part in an event (and
-/// at the end of the step), and the events wait in a queue by time. An event then costs the times of
-/// impact of its two bodies with their candidates, not of every pair in the world. Those
+/// at the end of the step), and the events wait in a queue by time. An event then costs the
+/// times of impact of its two bodies with their candidates, not of every pair in the world. Those
 /// predictions read compact copies of what they need of each body (EventBody, EventRole), not
 /// the bodies, which are read and written only where an event changes them.
 
@@ -118,15 +118,15 @@ struct EventScratch {
     /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
     std::vector<SphereEnd> ends;
     std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
-    /// The pending events of the slices of the step opened so far (see bucket_head), a heap:
+    /// The pending events of the slices of the step opened so far (see slice_head), a heap:
     /// earliest (then smallest pair) first.
     std::vector<ImpactEvent> heap;
     /// The pending events of the later slices of the step: the step is cut into equal slices
-    /// of time, and bucket_head[b] is the first node of slice b's list (or none), each node an
+    /// of time, and slice_head[b] is the first node of slice b's list (or none), each node an
     /// event and the next node. A slice's events join the heap only when its time comes, so
     /// that the heap holds a slice's events rather than the step's: in a pile of 10,000 a pop
     /// sifted through about 12 levels of a heap of thousands, a tenth of the event-timed step.
-    std::vector<std::uint32_t> bucket_head;
+    std::vector<std::uint32_t> slice_head;
     /// A pending event of a later slice: a node of its slice's list.
     struct PendingEvent {
         ImpactEvent event;   ///< the event
@@ -152,7 +152,8 @@ struct FiniteCheck {
 
 /// What move_impact_to_impact() leaves for the rest of the step.
 struct ImpactsAnswered {
-    double energy_change = 0.0;            ///< kinetic energy the responses at impacts changed, J (0 unless measured)
+    /// Kinetic energy the responses at impacts changed, J (0 unless measured: move_impact_to_impact()).
+    double energy_change = 0.0;
     /// Every pair that overlaps at the end of the step, each once, sorted by (first, second),
     /// found among the pairs whose bodies came near each other (a view of the scratch, valid
     /// until the next step).
