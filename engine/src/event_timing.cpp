@@ -391,7 +391,9 @@ class EventLoop {
 public:
     EventLoop(std::span<RigidBody> bodies, const EventMotion& motion, EventScratch& scratch)
         : bodies_(bodies), scratch_(scratch), gravity_(motion.gravity), k_(motion.k), dt_(motion.dt),
-          count_(static_cast<std::uint32_t>(bodies.size())) {}
+          gravity_reach_((std::abs(motion.k) + 1.0) * length(motion.gravity)),
+          slice_count_(std::max<std::uint32_t>(1, static_cast<std::uint32_t>(bodies.size() / 8))),
+          slices_per_second_(slice_count_ / motion.dt), count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
@@ -399,11 +401,21 @@ public:
         s.state.resize(count_);
         s.roles.resize(count_);
         s.events.assign(count_, 0);
-        s.reach.assign(count_, 0.0);
+        s.reach.resize(count_);
         s.extra.clear();
         s.extra_head.assign(count_, no_extra);
         s.extra_nodes.clear();
+        // Room for one overlapping pair per body from the start, as the broad phase keeps for
+        // its pairs, and for four times the last step's when that used half of it: a gas ends
+        // most steps with none and a pile with about two per body, and growing only at a new
+        // largest count would allocate now and then long after the scene warmed up.
+        if (s.all_pairs.capacity() < count_) s.all_pairs.reserve(count_);
+        if (s.all_pairs.capacity() < 2 * s.all_pairs.size()) s.all_pairs.reserve(4 * s.all_pairs.size());
         s.heap.clear();
+        s.pending.clear();
+        s.slice_head.assign(slice_count_, no_node);
+        opened_ = 0;
+        most_in_heap_ = 0;
         s.contacts.clear();
         s.moving_planes.clear();
         // Each body's bounding sphere widened by how far it can move this step at the velocity
@@ -413,8 +425,8 @@ public:
         for (std::uint32_t i = 0; i < count_; ++i) {
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
-            s.reach[i] = can_move(i, dt_);
-            s.proxies.add(body, i, 0.0, {}, s.reach[i]);
+            s.reach[i] = {body.position, can_move(i, dt_)};
+            s.proxies.add(body, i, 0.0, {}, s.reach[i].reach);
             if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
@@ -438,23 +450,38 @@ public:
         for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
     }
 
-    /// The earliest pending event that still holds, or nothing.
+    /// The earliest pending event that still holds, or nothing. The heap holds the slices
+    /// opened so far; every event of a later slice is later than all of them (slice_of() grows
+    /// with the time), so the next slice is opened only when the heap is empty.
     std::optional<ImpactEvent> next() {
         EventScratch& s = scratch_;
-        while (!s.heap.empty()) {
-            std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
-            const ImpactEvent e = s.heap.back();
-            s.heap.pop_back();
-            if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
+        for (;;) {
+            while (!s.heap.empty()) {
+                std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
+                const ImpactEvent e = s.heap.back();
+                s.heap.pop_back();
+                if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
+            }
+            if (opened_ == slice_count_) return std::nullopt;
+            open_slice();
         }
-        return std::nullopt;
     }
 
-    /// Advances body i to time t within the step.
-    void advance_to(std::uint32_t i, double t) {
-        advance(bodies_[i], gravity_, k_, t - scratch_.state[i].since);
-        note(i, t);
+    /// After the loop: room for at least twice what this step queued (four times when it
+    /// grows), so that a warm step allocates nothing. How many events a step queues, and how
+    /// many its slices hold at once, change from step to step (a slice holds a handful):
+    /// growing only at a new largest count would allocate now and then long after the scene
+    /// warmed up.
+    void keep_room() {
+        EventScratch& s = scratch_;
+        if (s.pending.capacity() < 2 * s.pending.size()) s.pending.reserve(4 * s.pending.size());
+        if (s.heap.capacity() < 2 * most_in_heap_) s.heap.reserve(4 * most_in_heap_);
     }
+
+    /// Advances body i to time t within the step, without noting it: its only caller,
+    /// answer_impact(), changes the body again with the response and notes it after that (a
+    /// note here as well was two copies of each body per event for nothing).
+    void advance_to(std::uint32_t i, double t) { advance(bodies_[i], gravity_, k_, t - scratch_.state[i].since); }
 
     /// Copies into the compact arrays what predictions read of body i, whose state now refers
     /// to time t: after every change the loop makes to the body (a move, a response, which may
@@ -534,8 +561,7 @@ private:
     /// being split into pieces at its events (each piece starts with the velocity gravity gave).
     [[nodiscard]] double can_move(std::uint32_t i, double left) const {
         const double speed_part = length(scratch_.state[i].velocity) * left;
-        return scratch_.roles[i].immovable ? speed_part
-                                           : speed_part + (std::abs(k_) + 1.0) * length(gravity_) * left * left;
+        return scratch_.roles[i].immovable ? speed_part : speed_part + gravity_reach_ * left * left;
     }
 
     /// True when body b is among body a's candidates already (its lists are short: the
@@ -580,8 +606,37 @@ private:
                                                           : no_impact;
         if (tau == no_impact) return;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
-        s.heap.push_back({t + tau, i, j, s.events[i], s.events[j]});
-        std::push_heap(s.heap.begin(), s.heap.end(), Later{});
+        enqueue({t + tau, i, j, s.events[i], s.events[j]});
+    }
+
+    /// Puts event e in the heap if its slice of the step is open, else in its slice's list.
+    void enqueue(const ImpactEvent& e) {
+        EventScratch& s = scratch_;
+        const std::uint32_t slice = slice_of(e.t);
+        if (slice < opened_) {
+            s.heap.push_back(e);
+            std::push_heap(s.heap.begin(), s.heap.end(), Later{});
+            most_in_heap_ = std::max(most_in_heap_, s.heap.size());
+            return;
+        }
+        s.pending.push_back({e, s.slice_head[slice]});
+        s.slice_head[slice] = static_cast<std::uint32_t>(s.pending.size() - 1);
+    }
+
+    /// The slice of the step time t falls in: floor(t / slice width), the last for t = dt
+    /// (and for anything rounding puts beyond it, or a NaN). Never smaller for a later time.
+    [[nodiscard]] std::uint32_t slice_of(double t) const {
+        const double x = t * slices_per_second_;
+        return x < static_cast<double>(slice_count_ - 1) ? static_cast<std::uint32_t>(x) : slice_count_ - 1;
+    }
+
+    /// Moves the next slice's events into the (empty) heap.
+    void open_slice() {
+        EventScratch& s = scratch_;
+        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
+        std::make_heap(s.heap.begin(), s.heap.end(), Later{});
+        most_in_heap_ = std::max(most_in_heap_, s.heap.size());
+        ++opened_;
     }
 
     /// False when bodies a and b (not planes) cannot meet at the speeds they now have: their
@@ -627,22 +682,20 @@ private:
 
     /// How far body i, as it now moves, may get from where it started the step by the end.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
-        const GridProxy& p = scratch_.proxies.proxies[i];
-        return length(scratch_.state[i].position - Vector3{p.x, p.y, p.z}) + can_move(i, dt_ - t);
+        return length(scratch_.state[i].position - scratch_.reach[i].origin) + can_move(i, dt_ - t);
     }
 
     /// True when body i may leave the widened sphere its candidates were found for.
     [[nodiscard]] bool outran(std::uint32_t i, double t) const {
-        return !scratch_.roles[i].immovable && needs_reach(i, t) > scratch_.reach[i];
+        return !scratch_.roles[i].immovable && needs_reach(i, t) > scratch_.reach[i].reach;
     }
 
     /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
     /// the step, comes within `radius` of i's centre then.
     void add_near(std::uint32_t i, double radius) {
         EventScratch& s = scratch_;
-        const GridProxy& p = s.proxies.proxies[i];
         s.near.clear();
-        s.broad_phase.bodies_near(s.proxies, {p.x, p.y, p.z}, radius, s.near);
+        s.broad_phase.bodies_near(s.proxies, s.reach[i].origin, radius, s.near);
         for (const std::uint32_t j : s.near)
             if (j != i && !(s.roles[i].immovable && s.roles[j].immovable)) add_candidate(i, j);
     }
@@ -657,8 +710,8 @@ private:
     /// exactly what it needs, searched again at the next speed-up, was no faster than a tenth.
     void search_again(std::uint32_t i, double t) {
         EventScratch& s = scratch_;
-        s.reach[i] = 1.1 * needs_reach(i, t);
-        add_near(i, s.state[i].bounding_radius + s.reach[i]);
+        s.reach[i].reach = 1.1 * needs_reach(i, t);
+        add_near(i, s.state[i].bounding_radius + s.reach[i].reach);
     }
 
     std::span<RigidBody> bodies_;
@@ -666,13 +719,25 @@ private:
     Vector3 gravity_;
     double k_;
     double dt_;
+    /// (|k| + 1) |g|, for can_move(): taken once per step rather than once per call (a square
+    /// root that the compiler cannot hoist out of the loops that write the scratch arrays).
+    double gravity_reach_;
+    /// How many slices the step is cut into for the queue of events: one per 8 bodies, so
+    /// that a slice holds a few events in a pile (0.65 per body and step) and fewer in a gas.
+    std::uint32_t slice_count_;
+    double slices_per_second_;   ///< slice_count_ / dt
+    std::uint32_t opened_ = 0;   ///< the slices whose events are in the heap (the first ones)
+    std::size_t most_in_heap_ = 0;  ///< the most events the heap held at once this step
+    static constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t count_;
 };
 
 /// Moves the two bodies of `event` to its moment and answers their contact there with the
-/// model's responder; returns the kinetic energy the response changed.
+/// model's responder; returns the kinetic energy the response changed, when `measure_energy`
+/// (else 0: four kinetic energies per event, spinning bodies' through their inertia, for a
+/// probe that a run without it reads as 0, as the discrete step's does).
 double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, EventLoop& loop, const ResponseModel& model,
-                     const FiniteCheck& check, EventScratch& scratch) {
+                     const FiniteCheck& check, EventScratch& scratch, bool measure_energy) {
     std::uint32_t first = event.i, second = event.j;
     loop.advance_to(first, event.t);
     loop.advance_to(second, event.t);
@@ -681,9 +746,9 @@ double answer_impact(std::span<RigidBody> bodies, const ImpactEvent& event, Even
         (bodies[first].shape.kind == ShapeKind::box && bodies[second].shape.kind == ShapeKind::sphere))
         std::swap(first, second);
     const Contact contact = touching_contact(bodies[first], first, bodies[second], second);
-    const double before = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]);
+    const double before = measure_energy ? kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) : 0.0;
     model.respond(bodies[first], bodies[second], contact);
-    const double change = kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before;
+    const double change = measure_energy ? kinetic_energy(bodies[first]) + kinetic_energy(bodies[second]) - before : 0.0;
     scratch.contacts.push_back(contact);
     if (check.on && !(poison(bodies[first]) + poison(bodies[second]) == 0.0))
         check_finite(bodies, check.names, check.step, "event: respond");
@@ -703,7 +768,7 @@ void advance_whole_step(std::span<RigidBody> bodies, const EventMotion& motion) 
 }
 
 ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMotion& motion, const ResponseModel& model,
-                                      const FiniteCheck& check, EventScratch& scratch) {
+                                      const FiniteCheck& check, EventScratch& scratch, bool measure_energy) {
     const auto count = static_cast<std::uint32_t>(bodies.size());
     EventLoop loop(bodies, motion, scratch);
     loop.start();
@@ -712,8 +777,9 @@ ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMo
     for (std::size_t events = 0; events < event_budget; ++events) {
         const std::optional<ImpactEvent> event = loop.next();
         if (!event) break;
-        energy_change += answer_impact(bodies, *event, loop, model, check, scratch);
+        energy_change += answer_impact(bodies, *event, loop, model, check, scratch, measure_energy);
     }
+    loop.keep_room();
     const double poisoned = loop.finish();  // every body to the end of the step
     if (check.on && !(poisoned == 0.0)) check_finite(bodies, check.names, check.step, "event: advance");
     return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};

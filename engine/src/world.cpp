@@ -77,13 +77,18 @@ void World::integrate_impact_to_impact() {
         guard("event: advance");
         return;
     }
-    impacts_ = move_impact_to_impact(bodies_, motion, model_, {settings_.check_finite, body_names_, steps_ + 1}, event_scratch_);
+    impacts_ = move_impact_to_impact(bodies_, motion, model_, {settings_.check_finite, body_names_, steps_ + 1}, event_scratch_,
+                                     shortcuts_.response_energy_probe);
     impacts_fresh_ = true;
 }
 
 void World::keep_answered_impacts() {
     response_energy_change_ += impacts_.energy_change;
-    // The contacts answered at their moment come first, in the order they were answered.
+    // The contacts answered at their moment come first, in the order they were answered. Room
+    // made first by doubling the capacity: an insert grows the vector to twice its size, which
+    // in a pile whose contacts grow step by step was just over what it had, again and again.
+    const std::size_t needed = contacts_.size() + event_scratch_.contacts.size();
+    if (contacts_.capacity() < needed) contacts_.reserve(std::max(needed, 2 * contacts_.capacity()));
     contacts_.insert(contacts_.begin(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
 }
 
