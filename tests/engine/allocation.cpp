@@ -111,6 +111,18 @@ World bouncing_pile() {
     return World(std::move(bodies), WorldSettings{1.0 / 60.0, {0.0, -9.81, 0.0}}, bouncing);
 }
 
+/// What `world` allocates over `steps` steps; `watch(world)` runs after each step, inside the
+/// count, to record what the test wants to know the steps did.
+template <class Watch>
+std::size_t allocations_over(World& world, int steps, Watch&& watch) {
+    const AllocationCounter counter;
+    for (int i = 0; i < steps; ++i) {
+        world.step();
+        watch(world);
+    }
+    return AllocationCounter::count();
+}
+
 }  // namespace
 
 // The replaceable global allocation functions ([new.delete]). The array and nothrow forms
@@ -141,15 +153,7 @@ TEST_CASE("after the first step, stepping a world allocates nothing", "[world][a
 
     constexpr int steps = 480;
     std::size_t contacts_seen = 0;
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < steps; ++i) {
-            world.step();
-            contacts_seen += world.contacts().size();
-        }
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, steps, [&](const World& w) { contacts_seen += w.contacts().size(); });
     CHECK(allocated == 0);
     // The claim is only worth something if contacts were stored and answered meanwhile.
     CHECK(contacts_seen >= steps);
@@ -167,15 +171,7 @@ TEST_CASE("once warm, a gas stepped with the grid broad phase allocates nothing"
 
     constexpr int steps = 600;
     std::size_t contacts_seen = 0;
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < steps; ++i) {
-            world.step();
-            contacts_seen += world.contacts().size();
-        }
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, steps, [&](const World& w) { contacts_seen += w.contacts().size(); });
     CHECK(allocated == 0);
     CHECK(world.used_broad_phase());
     CHECK(contacts_seen >= steps * 10);
@@ -192,15 +188,9 @@ TEST_CASE("once warm, a gas the swept test traces allocates nothing", "[world][a
 
     constexpr int steps = 600;
     std::size_t touches = 0;
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < steps; ++i) {
-            world.step();
-            for (const Contact& contact : world.contacts()) touches += contact.penetration == 0.0 ? 1 : 0;
-        }
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, steps, [&](const World& w) {
+        for (const Contact& contact : w.contacts()) touches += contact.penetration == 0.0 ? 1 : 0;
+    });
     CHECK(allocated == 0);
     CHECK(world.used_broad_phase());
     // Worth something only if the swept test moved balls back (its contacts touch, depth 0).
@@ -259,15 +249,9 @@ TEST_CASE("boxes too: box detection and the rotation step allocate nothing after
     world.step();
 
     std::size_t points_seen = 0;
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < 240; ++i) {
-            world.step();
-            for (const Contact& contact : world.contacts()) points_seen += contact.point_count;
-        }
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, 240, [&](const World& w) {
+        for (const Contact& contact : w.contacts()) points_seen += contact.point_count;
+    });
     CHECK(allocated == 0);
     CHECK(points_seen >= 240);
 }
@@ -285,16 +269,10 @@ TEST_CASE("the contact solver with sleeping allocates nothing once warm, through
     World world(std::move(bodies), settings, testing::solver_model);
     world.step();
     std::size_t most_asleep = 0, fewest_asleep_after = 6;
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < 300; ++i) {
-            world.step();
-            most_asleep = std::max(most_asleep, world.sleeping().sleeping());
-            if (most_asleep == 5) fewest_asleep_after = std::min(fewest_asleep_after, world.sleeping().sleeping());
-        }
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, 300, [&](const World& w) {
+        most_asleep = std::max(most_asleep, w.sleeping().sleeping());
+        if (most_asleep == 5) fewest_asleep_after = std::min(fewest_asleep_after, w.sleeping().sleeping());
+    });
     CHECK(allocated == 0);
     CHECK(fewest_asleep_after == 0);              // woken by the ball
     CHECK(world.sleeping().sleeping() == 6);     // asleep again
@@ -312,12 +290,7 @@ TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world]
     settings.contact_solver.substeps = 4;
     World world(std::move(bodies), settings, testing::solver_model);
     world.step();
-    std::size_t allocated = 0;
-    {
-        const AllocationCounter counter;
-        for (int i = 0; i < 300; ++i) world.step();
-        allocated = AllocationCounter::count();
-    }
+    const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
     CHECK(allocated == 0);
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
 }
@@ -332,15 +305,8 @@ TEST_CASE("once warm, event timing allocates nothing, in a gas and in a bouncing
 
         constexpr int steps = 600;
         std::size_t contacts_seen = 0;
-        std::size_t allocated = 0;
-        {
-            const AllocationCounter counter;
-            for (int i = 0; i < steps; ++i) {
-                world.step();
-                contacts_seen += world.contacts().size();
-            }
-            allocated = AllocationCounter::count();
-        }
+        const std::size_t allocated =
+            allocations_over(world, steps, [&](const World& w) { contacts_seen += w.contacts().size(); });
         CHECK(allocated == 0);
         CHECK(contacts_seen >= steps * 10);  // impacts every step: the loop had work to do
     }
