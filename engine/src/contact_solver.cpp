@@ -430,7 +430,7 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
             shift_[b] += bodies[b].velocity * h;
             turn_[b] += bodies[b].angular_velocity * h;
         }
-        pass(false);
+        for (int relax = 0; relax < settings.relax_passes; ++relax) pass(false);
     }
 
     // The bounce, along the normals alone, after the substeps (as friction's second phase).
