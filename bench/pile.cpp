@@ -90,6 +90,7 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.substeps = knobs.substeps;
     settings.contact_solver.contact_hertz = knobs.hertz;
     settings.contact_solver.sleeping = knobs.sleeping;
+    settings.contact_solver.relax_passes = knobs.relax_passes;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
     const double seconds = timed_steps(steps, budget, [&world] { world.step(); });

@@ -11,6 +11,8 @@
 #include <limits>
 #include <vector>
 
+#include "workbook/contact_solver.hpp"
+
 namespace workbook::bench {
 
 struct Pile {
@@ -74,6 +76,7 @@ struct PileKnobs {
     int substeps = 0;         ///< ContactSolverSettings::substeps (0: one solve a step)
     double hertz = 30.0;      ///< ContactSolverSettings::contact_hertz
     bool sleeping = true;     ///< ContactSolverSettings::sleeping
+    int relax_passes = ContactSolverSettings{}.relax_passes;  ///< ContactSolverSettings::relax_passes
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

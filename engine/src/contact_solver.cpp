@@ -382,7 +382,7 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     // Sets each point's mass and target for the chapter's solve_velocity: a point apart
     // may approach by its gap within the substep; an overlapping one is a soft contact that
     // pushes out what exceeds the slop (`soft`, no faster than max_push a step), or, in the
-    // relax pass, a rigid one that only stops the approach.
+    // relax passes, a rigid one that only stops the approach.
     auto aim = [&](const Contact& contact, std::size_t c, bool push) {
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             const SoftPoint& sp = soft_points_[c * max_contact_points + i];
@@ -430,7 +430,9 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
             shift_[b] += bodies[b].velocity * h;
             turn_[b] += bodies[b].angular_velocity * h;
         }
-        pass(false);
+        // One relax pass takes a lone contact's push back out exactly, but in a pile each
+        // point's correction disturbs its neighbours' (settings.relax_passes).
+        for (int relax = 0; relax < settings.relax_passes; ++relax) pass(false);
     }
 
     // The bounce, along the normals alone, after the substeps (as friction's second phase).
