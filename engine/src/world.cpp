@@ -441,7 +441,8 @@ std::vector<StageUse> World::plan() const {
                                                      : std::string("; sleeping off");
         const std::string passes =
             solver.substeps > 0 ? "in " + std::to_string(solver.substeps) + " substeps of soft contacts (a push and " +
-                                      std::to_string(solver.relax_passes) + " relax passes each)"
+                                      std::to_string(solver.relax_passes) +
+                                      (solver.relax_passes == 1 ? " relax pass each)" : " relax passes each)")
                                 : "up to " + std::to_string(solver.velocity_iterations) + " velocity and " +
                                       std::to_string(solver.position_iterations) + " position passes";
         stages.push_back({"solve contacts", true,
