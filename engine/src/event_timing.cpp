@@ -450,6 +450,9 @@ public:
         // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
         // body that an impact sends further is searched again (outran()).
         s.proxies.clear(count_);
+        // Cells half as wide where they pay (ProxySet::fine_cells): the widened spheres of a pile
+        // set cells that hold three bodies each, and a pair is found among fewer of them.
+        s.proxies.fine_cells = true;
         for (std::uint32_t i = 0; i < count_; ++i) {
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
