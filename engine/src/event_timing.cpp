@@ -754,9 +754,18 @@ private:
         return time_of_impact(bodies_[a], bodies_[b], gravity_, k_, dt_ - t);
     }
 
-    /// How far body i, as it now moves, may get from where it started the step by the end.
+    /// How far body i, as it now moves, may get from where it started the step by the end. Its
+    /// path is x + v tau + k g tau^2 over what is left of the step; the line x + v tau gets
+    /// furthest from the origin at one of its ends (the distance to a point is convex along a
+    /// line), and gravity adds at most what can_move() allows it. The nearer bound |x - origin|
+    /// + |v| left counted a body that an impact sends back where it came from as going on:
+    /// in a pile most impacts turn a ball round, and each such ball was searched again.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
-        return length(scratch_.state[i].position - scratch_.reach[i].origin) + can_move(i, dt_ - t);
+        const EventBody& state = scratch_.state[i];
+        const double left = dt_ - t;
+        const Vector3 from = state.position - scratch_.reach[i].origin;
+        const double line = std::max(length(from), length(from + state.velocity * left));
+        return scratch_.roles[i].immovable ? line : line + gravity_reach_ * left * left;
     }
 
     /// True when body i may leave the widened sphere its candidates were found for.
