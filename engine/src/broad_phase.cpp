@@ -258,35 +258,54 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     const std::uint64_t around = near_cells_;
     const std::uint32_t* start = cell_start_.data();
     const GridProxy* proxies = by_cell_.data();
-    for (std::uint64_t z = 0; z < nz; ++z) {
-        for (std::uint64_t y = 0; y < ny; ++y) {
-            const std::uint64_t row = (z * ny + y) * nx;
-            if (start[row] == start[row + nx]) continue;  // an empty row
-            for (std::uint64_t x = 0; x < nx; ++x) {
-                const std::uint32_t begin = start[row + x], end = start[row + x + 1];
-                if (begin == end) continue;
-                const std::uint64_t x0 = x > around ? x - around : 0, x1 = std::min(x + around, nx - 1);
-                std::uint32_t ranges[12][2];  // at most 2 + 2 * 5 with fine cells
-                int count = 0;
-                for (std::uint64_t yy = y + 1; yy <= std::min(y + around, ny - 1); ++yy) {
-                    const std::uint64_t next = (z * ny + yy) * nx;
-                    ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
-                }
-                for (std::uint64_t zz = z + 1; zz <= std::min(z + around, nz - 1); ++zz) {
-                    for (std::uint64_t yy = y > around ? y - around : 0; yy <= std::min(y + around, ny - 1); ++yy) {
-                        const std::uint64_t next = (zz * ny + yy) * nx;
+    auto walk = [&](auto&& test) {
+        for (std::uint64_t z = 0; z < nz; ++z) {
+            for (std::uint64_t y = 0; y < ny; ++y) {
+                const std::uint64_t row = (z * ny + y) * nx;
+                if (start[row] == start[row + nx]) continue;  // an empty row
+                for (std::uint64_t x = 0; x < nx; ++x) {
+                    const std::uint32_t begin = start[row + x], end = start[row + x + 1];
+                    if (begin == end) continue;
+                    const std::uint64_t x0 = x > around ? x - around : 0, x1 = std::min(x + around, nx - 1);
+                    std::uint32_t ranges[12][2];  // at most 2 + 2 * 5 with fine cells
+                    int count = 0;
+                    for (std::uint64_t yy = y + 1; yy <= std::min(y + around, ny - 1); ++yy) {
+                        const std::uint64_t next = (z * ny + yy) * nx;
                         ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
                     }
-                }
-                const std::uint32_t own_end = start[row + x1 + 1];
-                for (std::uint32_t s = begin; s < end; ++s) {
-                    const GridProxy& p = proxies[s];
-                    for (std::uint32_t t = s + 1; t < own_end; ++t) pair(p, proxies[t]);
-                    for (int r = 0; r < count; ++r)
-                        for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) pair(p, proxies[t]);
+                    for (std::uint64_t zz = z + 1; zz <= std::min(z + around, nz - 1); ++zz) {
+                        for (std::uint64_t yy = y > around ? y - around : 0; yy <= std::min(y + around, ny - 1); ++yy) {
+                            const std::uint64_t next = (zz * ny + yy) * nx;
+                            ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
+                        }
+                    }
+                    const std::uint32_t own_end = start[row + x1 + 1];
+                    for (std::uint32_t s = begin; s < end; ++s) {
+                        const GridProxy& p = proxies[s];
+                        for (std::uint32_t t = s + 1; t < own_end; ++t) test(p, proxies[t]);
+                        for (int r = 0; r < count; ++r)
+                            for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) test(p, proxies[t]);
+                    }
                 }
             }
         }
+    };
+    if (set.swept) {
+        walk(pair);
+    } else {
+        // Without a swept set every travel is 0 and no sphere is fast, and pair() comes down to
+        // its second test (the first, wider by a relative slack, passes whenever it does):
+        // that test alone, as event timing's widened spheres and worlds without the swept test
+        // ask.
+        walk([&](const GridProxy& p, const GridProxy& q) {
+            const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            const double radii = p.radius + q.radius;
+            if (d2 <= radii * radii * (1.0 + tolerances::conservative_slack) && (immovable_pairs || p.movable || q.movable)) {
+                const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
+                contact_keys_.push_back(a << 32 | b);
+            }
+        });
     }
 
     auto is_large = [this](const GridProxy& q) { return !(q.radius + q.travel <= small_reach_) || is_wide(q); };
