@@ -414,6 +414,21 @@ struct Later {
     }
 };
 
+/// Later's order reversed, for sorting a slice's events earliest first. No time of impact is
+/// a NaN (each is compared with its limit before it is given), but a NaN time would make the
+/// order no strict weak order, and std::sort may then read past the range: one counts here
+/// as later than any other time.
+struct Earlier {
+    bool operator()(const ImpactEvent& a, const ImpactEvent& b) const {
+        constexpr double latest = std::numeric_limits<double>::infinity();
+        const double ta = std::isnan(a.t) ? latest : a.t;
+        const double tb = std::isnan(b.t) ? latest : b.t;
+        if (ta != tb) return ta < tb;
+        if (a.i != b.i) return a.i < b.i;
+        return a.j < b.j;
+    }
+};
+
 /// The event loop of one step over `bodies`; see move_impact_to_impact().
 class EventLoop {
 public:
@@ -440,10 +455,13 @@ public:
         if (s.all_pairs.capacity() < count_) s.all_pairs.reserve(count_);
         if (s.all_pairs.capacity() < 2 * s.all_pairs.size()) s.all_pairs.reserve(4 * s.all_pairs.size());
         s.heap.clear();
+        s.run.clear();
+        s.run_next = 0;
         s.pending.clear();
         s.slice_head.assign(slice_count_, no_node);
         opened_ = 0;
         most_in_heap_ = 0;
+        longest_run_ = 0;
         s.contacts.clear();
         s.moving_planes.clear();
         // Each body's bounding sphere widened by how far it can move this step at the velocity
@@ -493,16 +511,23 @@ public:
         }
     }
 
-    /// The earliest pending event that still holds, or nothing. The heap holds the slices
-    /// opened so far; every event of a later slice is later than all of them (slice_of() grows
-    /// with the time), so the next slice is opened only when the heap is empty.
+    /// The earliest pending event that still holds, or nothing. The sorted run and the heap
+    /// hold the slices opened so far; every event of a later slice is later than all of them
+    /// (slice_of() grows with the time), so the next slice is opened only when both are empty.
+    /// The two give their events in the one order of Later (a total order of the events that
+    /// can both hold), so the events come as they came from one heap.
     std::optional<ImpactEvent> next() {
         EventScratch& s = scratch_;
         for (;;) {
-            while (!s.heap.empty()) {
-                std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
-                const ImpactEvent e = s.heap.back();
-                s.heap.pop_back();
+            while (s.run_next < s.run.size() || !s.heap.empty()) {
+                ImpactEvent e;
+                if (s.heap.empty() || (s.run_next < s.run.size() && Later{}(s.heap.front(), s.run[s.run_next]))) {
+                    e = s.run[s.run_next++];
+                } else {
+                    std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
+                    e = s.heap.back();
+                    s.heap.pop_back();
+                }
                 if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
             }
             if (opened_ == slice_count_) return std::nullopt;
@@ -518,7 +543,13 @@ public:
     void keep_room() {
         EventScratch& s = scratch_;
         if (s.pending.capacity() < 2 * s.pending.size()) s.pending.reserve(4 * s.pending.size());
-        if (s.heap.capacity() < 2 * most_in_heap_) s.heap.reserve(4 * most_in_heap_);
+        // The heap and the run with room for a few dozen events at least: in a gas most slices
+        // hold one event or none, and the heap takes an event only when an impact is predicted
+        // into the slice under way, which may first happen long after the scene warmed up.
+        constexpr std::size_t least = 64;
+        const std::size_t heap_room = std::max(least, most_in_heap_), run_room = std::max(least, longest_run_);
+        if (s.heap.capacity() < 2 * heap_room) s.heap.reserve(4 * heap_room);
+        if (s.run.capacity() < 2 * run_room) s.run.reserve(4 * run_room);
     }
 
     /// Advances body i to time t within the step, without noting it: its only caller,
@@ -709,12 +740,14 @@ private:
         return x < static_cast<double>(slice_count_ - 1) ? static_cast<std::uint32_t>(x) : slice_count_ - 1;
     }
 
-    /// Moves the next slice's events into the (empty) heap.
+    /// Moves the next slice's events into the (used up) run, sorted earliest first.
     void open_slice() {
         EventScratch& s = scratch_;
-        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
-        std::make_heap(s.heap.begin(), s.heap.end(), Later{});
-        most_in_heap_ = std::max(most_in_heap_, s.heap.size());
+        s.run.clear();
+        s.run_next = 0;
+        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.run.push_back(s.pending[n].event);
+        std::sort(s.run.begin(), s.run.end(), Earlier{});
+        longest_run_ = std::max(longest_run_, s.run.size());
         ++opened_;
     }
 
@@ -811,6 +844,7 @@ private:
     double slices_per_second_;   ///< slice_count_ / dt
     std::uint32_t opened_ = 0;   ///< the slices whose events are in the heap (the first ones)
     std::size_t most_in_heap_ = 0;  ///< the most events the heap held at once this step
+    std::size_t longest_run_ = 0;   ///< the most events a slice held this step
     static constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t count_;
 };
