@@ -699,8 +699,9 @@ private:
     }
 
     /// predict() for two spheres that take part, sphere a seen at t as seen_at() shows it.
-    /// Written out where it is called rather than called: the compiler would not inline it,
-    /// and the call cost what its tests do (most pairs end in cannot_meet_soon()).
+    /// changed() and start() write its two lines out rather than call it: the compiler would
+    /// not inline it there, and the call cost what its tests do (most pairs end in
+    /// cannot_meet_soon()).
     void predict_spheres(std::uint32_t a, const SphereMotion& seen_a, std::uint32_t b, double t) {
         const SpherePair pair = relative_motion(seen_a, seen_at(b, t), gravity_, k_);
         if (!cannot_meet_soon(pair, dt_ - t)) time_spheres(a, b, pair, t);
@@ -790,7 +791,7 @@ private:
     /// How far body i, as it now moves, may get from where it started the step by the end. Its
     /// path is x + v tau + k g tau^2 over what is left of the step; the line x + v tau gets
     /// furthest from the origin at one of its ends (the distance to a point is convex along a
-    /// line), and gravity adds at most what can_move() allows it. The nearer bound |x - origin|
+    /// line), and gravity adds at most what can_move() allows it. The looser bound |x - origin|
     /// + |v| left counted a body that an impact sends back where it came from as going on:
     /// in a pile most impacts turn a ball round, and each such ball was searched again.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
