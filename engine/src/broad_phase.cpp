@@ -129,10 +129,11 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     small_reach_ = small_reach;
 
     // Cells at least one largest reach wide (with room for rounding), so that two bodies that
-    // may pair sit in the same or neighbouring cells; coarser when the bodies are spread out,
+    // may pair sit in the same or neighbouring cells, or half that with fine cells (two bodies
+    // that may pair then sit at most two cells apart); coarser when the bodies are spread out,
     // so that the grid never has more than about two cells per body (memory stays linear in N).
     const std::size_t budget = 2 * bounded + 8;
-    double cell = std::max(reach * (1.0 + tolerances::grid_cell_margin) + 4.0 * slack_, std::numeric_limits<double>::min());
+    const double full = std::max(reach * (1.0 + tolerances::grid_cell_margin) + 4.0 * slack_, std::numeric_limits<double>::min());
     // Where the budget binds, start near the width that meets it (the volume, or area, or
     // length the bodies span over the budget), then widen in small steps: steps of 1.5 left
     // the 2D gas of 1,000 discs with cells 0.34 m wide where 0.23 m fit, twice the pairs to test.
@@ -144,7 +145,14 @@ bool BroadPhase::build_grid(const ProxySet& set) {
             ++dimensions;
         }
     }
-    if (dimensions > 0) cell = std::max(cell, 0.9 * std::pow(span / static_cast<double>(budget), 1.0 / dimensions));
+    const double least = dimensions > 0 ? 0.9 * std::pow(span / static_cast<double>(budget), 1.0 / dimensions) : 0.0;
+    // Fine cells only for bodies spread in three dimensions, and where the budget lets them be
+    // narrower than 0.6 of a reach, so that a cell and the two around it each way span less
+    // than three cells of a reach. Walking five cells each way rather than three covers (5/6)^3
+    // of the volume in 3D, (5/6)^2 in 2D, over four or eight times the cells: event timing's
+    // step in the pile of the bench (3D) was 4 to 8% faster, in the gas (2D) 7% slower.
+    near_cells_ = set.fine_cells && !set.swept && dimensions == 3 && 5.0 * least < 3.0 * full ? 2 : 1;
+    double cell = std::max(full / static_cast<double>(near_cells_), least);
     std::uint64_t nx = 0, ny = 0, nz = 0;
     for (;;) {
         nx = cells_along(hi[0] - lo[0], cell);
@@ -242,40 +250,62 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     };
 
     // Each cell against itself and the neighbours after it: in its own row the next cell, in
-    // the next row the three below it, in the next layer the nine behind it. The cells of a
-    // row are contiguous in by_cell_, so each of those is one range.
+    // the next row the three below it, in the next layer the nine behind it (with fine cells,
+    // two cells each way: the next two in its row, five in each of the next two rows, five
+    // rows of five in each of the next two layers). The cells of a row are contiguous in
+    // by_cell_, so each row's part is one range.
     const std::uint64_t nx = cells_[0], ny = cells_[1], nz = cells_[2];
+    const std::uint64_t around = near_cells_;
     const std::uint32_t* start = cell_start_.data();
     const GridProxy* proxies = by_cell_.data();
-    for (std::uint64_t z = 0; z < nz; ++z) {
-        for (std::uint64_t y = 0; y < ny; ++y) {
-            const std::uint64_t row = (z * ny + y) * nx;
-            if (start[row] == start[row + nx]) continue;  // an empty row
-            for (std::uint64_t x = 0; x < nx; ++x) {
-                const std::uint32_t begin = start[row + x], end = start[row + x + 1];
-                if (begin == end) continue;
-                const std::uint64_t x0 = x > 0 ? x - 1 : 0, x1 = std::min(x + 1, nx - 1);
-                std::uint32_t ranges[4][2];
-                int count = 0;
-                if (y + 1 < ny) {
-                    const std::uint64_t next = row + nx;
-                    ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
-                }
-                if (z + 1 < nz) {
-                    for (std::uint64_t yy = y > 0 ? y - 1 : 0; yy <= std::min(y + 1, ny - 1); ++yy) {
-                        const std::uint64_t next = ((z + 1) * ny + yy) * nx;
+    auto walk = [&](auto&& test) {
+        for (std::uint64_t z = 0; z < nz; ++z) {
+            for (std::uint64_t y = 0; y < ny; ++y) {
+                const std::uint64_t row = (z * ny + y) * nx;
+                if (start[row] == start[row + nx]) continue;  // an empty row
+                for (std::uint64_t x = 0; x < nx; ++x) {
+                    const std::uint32_t begin = start[row + x], end = start[row + x + 1];
+                    if (begin == end) continue;
+                    const std::uint64_t x0 = x > around ? x - around : 0, x1 = std::min(x + around, nx - 1);
+                    std::uint32_t ranges[12][2];  // at most 2 + 2 * 5 with fine cells
+                    int count = 0;
+                    for (std::uint64_t yy = y + 1; yy <= std::min(y + around, ny - 1); ++yy) {
+                        const std::uint64_t next = (z * ny + yy) * nx;
                         ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
                     }
-                }
-                const std::uint32_t own_end = start[row + x1 + 1];
-                for (std::uint32_t s = begin; s < end; ++s) {
-                    const GridProxy& p = proxies[s];
-                    for (std::uint32_t t = s + 1; t < own_end; ++t) pair(p, proxies[t]);
-                    for (int r = 0; r < count; ++r)
-                        for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) pair(p, proxies[t]);
+                    for (std::uint64_t zz = z + 1; zz <= std::min(z + around, nz - 1); ++zz) {
+                        for (std::uint64_t yy = y > around ? y - around : 0; yy <= std::min(y + around, ny - 1); ++yy) {
+                            const std::uint64_t next = (zz * ny + yy) * nx;
+                            ranges[count][0] = start[next + x0], ranges[count][1] = start[next + x1 + 1], ++count;
+                        }
+                    }
+                    const std::uint32_t own_end = start[row + x1 + 1];
+                    for (std::uint32_t s = begin; s < end; ++s) {
+                        const GridProxy& p = proxies[s];
+                        for (std::uint32_t t = s + 1; t < own_end; ++t) test(p, proxies[t]);
+                        for (int r = 0; r < count; ++r)
+                            for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) test(p, proxies[t]);
+                    }
                 }
             }
         }
+    };
+    if (set.swept) {
+        walk(pair);
+    } else {
+        // Without a swept set every travel is 0 and no sphere is fast, and pair() comes down to
+        // its second test (the first, wider by a relative slack, passes whenever it does):
+        // that test alone, as event timing's widened spheres and worlds without the swept test
+        // ask.
+        walk([&](const GridProxy& p, const GridProxy& q) {
+            const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            const double radii = p.radius + q.radius;
+            if (d2 <= radii * radii * (1.0 + tolerances::conservative_slack) && (immovable_pairs || p.movable || q.movable)) {
+                const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
+                contact_keys_.push_back(a << 32 | b);
+            }
+        });
     }
 
     auto is_large = [this](const GridProxy& q) { return !(q.radius + q.travel <= small_reach_) || is_wide(q); };

@@ -111,33 +111,55 @@ Vector3 acceleration_of(const SphereMotion& sphere, const Vector3& gravity) {
     return sphere.immovable ? Vector3{} : gravity;
 }
 
-/// The earliest tau in [0, limit] at which two spheres touch while approaching, or no_impact.
-double sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vector3& gravity, double k, double limit) {
-    const Vector3 d = s1.position - s2.position;
-    const Vector3 u = s1.velocity - s2.velocity;
-    const Vector3 a = (acceleration_of(s1, gravity) - acceleration_of(s2, gravity)) * k;
-    // Cheap answers first, without a square root; most pairs of a step end here. A pair
-    // that does not move relative to itself keeps its distance (a row of touching balls, two
-    // balls falling together) ...
-    if (u == Vector3{} && a == Vector3{}) return no_impact;
+/// Two spheres relative to each other: the offset of the centres d, the relative velocity u,
+/// and a, the relative acceleration times k, so that the offset is d + u tau + a tau^2 (the
+/// file comment's motion); and the sum of the radii.
+struct SpherePair {
+    Vector3 d;      ///< m
+    Vector3 u;      ///< m/s
+    Vector3 a;      ///< m/s^2
+    double radii;   ///< m
+};
+
+inline SpherePair relative_motion(const SphereMotion& s1, const SphereMotion& s2, const Vector3& gravity, double k) {
+    return {s1.position - s2.position, s1.velocity - s2.velocity,
+            (acceleration_of(s1, gravity) - acceleration_of(s2, gravity)) * k, s1.radius + s2.radius};
+}
+
+/// sphere_sphere()'s first tests, without a square root: true when they show that the pair
+/// cannot touch within the limit. Most pairs of a step end here, so the event loop makes these
+/// tests inline, where it has the two spheres at hand, and calls the rest only for the few
+/// pairs that pass them (in a pile 1 in 15 predictions finds an impact).
+inline bool cannot_meet_soon(const SpherePair& p, double limit) {
+    // A pair that does not move relative to itself keeps its distance (a row of touching balls,
+    // two balls falling together) ...
+    if (p.u == Vector3{} && p.a == Vector3{}) return true;
     // ... two that share their acceleration (both falling, or both pinned) and are not closing
     // (d . u >= 0) only draw apart, |d + u t|^2 grows with t: every answer below would be
     // no_impact, touching or not. In a pile half the neighbours of a body that just bounced
     // are moving away from it ...
-    const double approach = dot(d, u);
-    if (a == Vector3{} && approach >= 0.0) return no_impact;
-    const double radii = s1.radius + s2.radius;
+    if (!(p.a == Vector3{})) return false;
+    const double approach = dot(p.d, p.u);
+    if (approach >= 0.0) return true;
     // ... and two such that are closing stay at |d + u t|^2 >= |d|^2 + 2 t (d . u) >=
     // |d|^2 + 2 limit (d . u) over [0, limit]: when that is clear of the radii by more than
     // rounding (a relative conservative_slack, far wider than the touching band), they cannot
-    // touch within the limit ...
-    if (a == Vector3{}) {
-        const double nearest_squared = length_squared(d) + 2.0 * limit * approach;
-        const double scale = length_squared(d) - 2.0 * limit * approach + radii * radii;
-        if (nearest_squared > radii * radii + tolerances::conservative_slack * scale) return no_impact;
-    }
+    // touch within the limit.
+    const double nearest_squared = length_squared(p.d) + 2.0 * limit * approach;
+    const double scale = length_squared(p.d) - 2.0 * limit * approach + p.radii * p.radii;
+    return nearest_squared > p.radii * p.radii + tolerances::conservative_slack * scale;
+}
+
+/// The earliest tau in [0, limit] at which a pair of spheres that cannot_meet_soon() did not
+/// rule out touches while approaching, or no_impact.
+double first_touch(const SpherePair& p, double limit) {
+    const Vector3& d = p.d;
+    const Vector3& u = p.u;
+    const Vector3& a = p.a;
+    const double radii = p.radii;
+    const double approach = dot(d, u);
     const double limit2 = limit * limit;
-    // ... Otherwise the centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
+    // The centres close by at most reach = |u| limit + |a| limit^2 over [0, limit], where
     // reach^2 <= 2 (|u|^2 limit^2 + |a|^2 limit^4); centres more than 2 max(radii, reach) apart
     // cannot come within the radii.
     const double reach_squared = 2.0 * (length_squared(u) * limit2 + length_squared(a) * (limit2 * limit2));
@@ -178,6 +200,12 @@ double sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vecto
         previous = value;
     }
     return no_impact;
+}
+
+/// The earliest tau in [0, limit] at which two spheres touch while approaching, or no_impact.
+double sphere_sphere(const SphereMotion& s1, const SphereMotion& s2, const Vector3& gravity, double k, double limit) {
+    const SpherePair p = relative_motion(s1, s2, gravity, k);
+    return cannot_meet_soon(p, limit) ? no_impact : first_touch(p, limit);
 }
 
 /// Advances one body by tau along the motion of the file comment: a kinematic body at its set
@@ -386,6 +414,21 @@ struct Later {
     }
 };
 
+/// Later's order reversed, for sorting a slice's events earliest first. No time of impact is
+/// a NaN (each is compared with its limit before it is given), but a NaN time would make the
+/// order no strict weak order, and std::sort may then read past the range: one counts here
+/// as later than any other time.
+struct Earlier {
+    bool operator()(const ImpactEvent& a, const ImpactEvent& b) const {
+        constexpr double latest = std::numeric_limits<double>::infinity();
+        const double ta = std::isnan(a.t) ? latest : a.t;
+        const double tb = std::isnan(b.t) ? latest : b.t;
+        if (ta != tb) return ta < tb;
+        if (a.i != b.i) return a.i < b.i;
+        return a.j < b.j;
+    }
+};
+
 /// The event loop of one step over `bodies`; see move_impact_to_impact().
 class EventLoop {
 public:
@@ -412,16 +455,22 @@ public:
         if (s.all_pairs.capacity() < count_) s.all_pairs.reserve(count_);
         if (s.all_pairs.capacity() < 2 * s.all_pairs.size()) s.all_pairs.reserve(4 * s.all_pairs.size());
         s.heap.clear();
+        s.run.clear();
+        s.run_next = 0;
         s.pending.clear();
         s.slice_head.assign(slice_count_, no_node);
         opened_ = 0;
         most_in_heap_ = 0;
+        longest_run_ = 0;
         s.contacts.clear();
         s.moving_planes.clear();
         // Each body's bounding sphere widened by how far it can move this step at the velocity
         // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
         // body that an impact sends further is searched again (outran()).
         s.proxies.clear(count_);
+        // Cells half as wide where they pay (ProxySet::fine_cells): the widened spheres of a pile
+        // set cells that hold three bodies each, and a pair is found among fewer of them.
+        s.proxies.fine_cells = true;
         for (std::uint32_t i = 0; i < count_; ++i) {
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
@@ -446,20 +495,39 @@ public:
         for (const std::uint32_t i : s.moving_planes)
             for (std::uint32_t j = 0; j < count_; ++j)
                 if (j != i) add_candidate(j, i);
-        for (const BodyPair& p : s.pairs) predict(p.first, p.second, 0.0);
-        for (const BodyPair& p : s.extra) predict(p.first, p.second, 0.0);
+        // Pairs of spheres tested inline as changed() tests them (no body has had an event yet,
+        // so none has reached max_events_per_body).
+        for (const std::vector<BodyPair>* list : {&s.pairs, &s.extra}) {
+            for (const BodyPair& p : *list) {
+                const EventRole& a = s.roles[p.first];
+                const EventRole& b = s.roles[p.second];
+                if (!(a.sphere && b.sphere && a.takes_part && b.takes_part && !(a.immovable && b.immovable))) {
+                    predict(p.first, p.second, 0.0);
+                    continue;
+                }
+                const SpherePair pair = relative_motion(seen_at(p.first, 0.0), seen_at(p.second, 0.0), gravity_, k_);  // predict_spheres()
+                if (!cannot_meet_soon(pair, dt_)) time_spheres(p.first, p.second, pair, 0.0);
+            }
+        }
     }
 
-    /// The earliest pending event that still holds, or nothing. The heap holds the slices
-    /// opened so far; every event of a later slice is later than all of them (slice_of() grows
-    /// with the time), so the next slice is opened only when the heap is empty.
+    /// The earliest pending event that still holds, or nothing. The sorted run and the heap
+    /// hold the slices opened so far; every event of a later slice is later than all of them
+    /// (slice_of() grows with the time), so the next slice is opened only when both are empty.
+    /// The two give their events in the one order of Later (a total order of the events that
+    /// can both hold), so the events come as they came from one heap.
     std::optional<ImpactEvent> next() {
         EventScratch& s = scratch_;
         for (;;) {
-            while (!s.heap.empty()) {
-                std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
-                const ImpactEvent e = s.heap.back();
-                s.heap.pop_back();
+            while (s.run_next < s.run.size() || !s.heap.empty()) {
+                ImpactEvent e;
+                if (s.heap.empty() || (s.run_next < s.run.size() && Later{}(s.heap.front(), s.run[s.run_next]))) {
+                    e = s.run[s.run_next++];
+                } else {
+                    std::pop_heap(s.heap.begin(), s.heap.end(), Later{});
+                    e = s.heap.back();
+                    s.heap.pop_back();
+                }
                 if (e.events_i == s.events[e.i] && e.events_j == s.events[e.j]) return e;
             }
             if (opened_ == slice_count_) return std::nullopt;
@@ -475,7 +543,13 @@ public:
     void keep_room() {
         EventScratch& s = scratch_;
         if (s.pending.capacity() < 2 * s.pending.size()) s.pending.reserve(4 * s.pending.size());
-        if (s.heap.capacity() < 2 * most_in_heap_) s.heap.reserve(4 * most_in_heap_);
+        // The heap and the run with room for a few dozen events at least: in a gas most slices
+        // hold one event or none, and the heap takes an event only when an impact is predicted
+        // into the slice under way, which may first happen long after the scene warmed up.
+        constexpr std::size_t least = 64;
+        const std::size_t heap_room = std::max(least, most_in_heap_), run_room = std::max(least, longest_run_);
+        if (s.heap.capacity() < 2 * heap_room) s.heap.reserve(4 * heap_room);
+        if (s.run.capacity() < 2 * run_room) s.run.reserve(4 * run_room);
     }
 
     /// Advances body i to time t within the step, without noting it: its only caller,
@@ -499,11 +573,26 @@ public:
         EventScratch& s = scratch_;
         ++s.events[i];
         if (outran(i, t)) search_again(i, t);
-        if (s.events[i] >= max_events_per_body || !s.roles[i].takes_part) return;
-        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n)
-            if (s.partners[n] != skip) predict(i, s.partners[n], t);
-        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next)
-            if (s.extra_nodes[n].partner != skip) predict(i, s.extra_nodes[n].partner, t);
+        const EventRole role = s.roles[i];
+        if (s.events[i] >= max_events_per_body || !role.takes_part) return;
+        // A sphere is seen at t once for all its candidates, and its pairs with spheres (most
+        // of a pile's predictions) are tested here, inline: through predict() and a call for
+        // every pair, the calls and the copies of the two spheres they passed cost about what
+        // the tests themselves did.
+        const SphereMotion seen = role.sphere ? seen_at(i, t) : SphereMotion{};
+        const auto one = [&](std::uint32_t partner) {
+            if (partner == skip) return;
+            const EventRole& other = s.roles[partner];
+            if (!(role.sphere && other.sphere)) {
+                predict(i, partner, t);
+                return;
+            }
+            if (!other.takes_part || (role.immovable && other.immovable) || s.events[partner] >= max_events_per_body) return;
+            const SpherePair pair = relative_motion(seen, seen_at(partner, t), gravity_, k_);  // predict_spheres()
+            if (!cannot_meet_soon(pair, dt_ - t)) time_spheres(i, partner, pair, t);
+        };
+        for (std::uint32_t n = s.start[i]; n < s.start[i + 1]; ++n) one(s.partners[n]);
+        for (std::uint32_t n = s.extra_head[i]; n != no_extra; n = s.extra_nodes[n].next) one(s.extra_nodes[n].partner);
     }
 
     /// For changed(): no body to skip.
@@ -601,12 +690,34 @@ private:
         // Two spheres are timed from the compact arrays, whose first tests (no square root)
         // pass over most pairs that cannot meet; any other pair first passes cheaply over
         // bodies too far apart to meet at the speeds they now have.
-        const double tau = role_a.sphere && role_b.sphere ? spheres_meet(a, b, t)
-                           : may_meet(a, b)               ? bodies_meet(a, b, t).value_or(no_impact)
-                                                          : no_impact;
-        if (tau == no_impact) return;
+        if (role_a.sphere && role_b.sphere) {
+            predict_spheres(a, seen_at(a, t), b, t);
+            return;
+        }
+        const double tau = may_meet(a, b) ? bodies_meet(a, b, t).value_or(no_impact) : no_impact;
+        if (tau != no_impact) push_impact(a, b, t + tau);
+    }
+
+    /// predict() for two spheres that take part, sphere a seen at t as seen_at() shows it.
+    /// changed() and start() write its two lines out rather than call it: the compiler would
+    /// not inline it there, and the call cost what its tests do (most pairs end in
+    /// cannot_meet_soon()).
+    void predict_spheres(std::uint32_t a, const SphereMotion& seen_a, std::uint32_t b, double t) {
+        const SpherePair pair = relative_motion(seen_a, seen_at(b, t), gravity_, k_);
+        if (!cannot_meet_soon(pair, dt_ - t)) time_spheres(a, b, pair, t);
+    }
+
+    /// The rest of predict_spheres() for a pair that cannot_meet_soon() did not rule out.
+    void time_spheres(std::uint32_t a, std::uint32_t b, const SpherePair& pair, double t) {
+        const double tau = first_touch(pair, dt_ - t);
+        if (tau != no_impact) push_impact(a, b, t + tau);
+    }
+
+    /// Queues an impact of bodies a and b at time `when`, as their event counts stand.
+    void push_impact(std::uint32_t a, std::uint32_t b, double when) {
+        const EventScratch& s = scratch_;
         const std::uint32_t i = std::min(a, b), j = std::max(a, b);
-        enqueue({t + tau, i, j, s.events[i], s.events[j]});
+        enqueue({when, i, j, s.events[i], s.events[j]});
     }
 
     /// Puts event e in the heap if its slice of the step is open, else in its slice's list.
@@ -630,12 +741,14 @@ private:
         return x < static_cast<double>(slice_count_ - 1) ? static_cast<std::uint32_t>(x) : slice_count_ - 1;
     }
 
-    /// Moves the next slice's events into the (empty) heap.
+    /// Moves the next slice's events into the (used up) run, sorted earliest first.
     void open_slice() {
         EventScratch& s = scratch_;
-        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.heap.push_back(s.pending[n].event);
-        std::make_heap(s.heap.begin(), s.heap.end(), Later{});
-        most_in_heap_ = std::max(most_in_heap_, s.heap.size());
+        s.run.clear();
+        s.run_next = 0;
+        for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.run.push_back(s.pending[n].event);
+        std::sort(s.run.begin(), s.run.end(), Earlier{});
+        longest_run_ = std::max(longest_run_, s.run.size());
         ++opened_;
     }
 
@@ -652,13 +765,8 @@ private:
         return length_squared(state_a.position - state_b.position) <= within * within * (1.0 + tolerances::conservative_slack);
     }
 
-    /// Two spheres' time of impact after t, from the compact arrays alone: each seen at t as
-    /// SeenAfter shows a body (the same arithmetic, so the same answer).
-    [[nodiscard]] double spheres_meet(std::uint32_t a, std::uint32_t b, double t) const {
-        return sphere_sphere(seen_at(a, t), seen_at(b, t), gravity_, k_, dt_ - t);
-    }
-
-    /// Sphere i as time_of_impact() must see it at time t; see SeenAfter.
+    /// Sphere i as time_of_impact() must see it at time t, from the compact arrays alone: as
+    /// SeenAfter shows a body (the same arithmetic, so two spheres' time of impact is the same).
     [[nodiscard]] SphereMotion seen_at(std::uint32_t i, double t) const {
         const EventBody& state = scratch_.state[i];
         SphereMotion seen{state.position, state.velocity, state.bounding_radius, scratch_.roles[i].immovable};
@@ -680,9 +788,18 @@ private:
         return time_of_impact(bodies_[a], bodies_[b], gravity_, k_, dt_ - t);
     }
 
-    /// How far body i, as it now moves, may get from where it started the step by the end.
+    /// How far body i, as it now moves, may get from where it started the step by the end. Its
+    /// path is x + v tau + k g tau^2 over what is left of the step; the line x + v tau gets
+    /// furthest from the origin at one of its ends (the distance to a point is convex along a
+    /// line), and gravity adds at most what can_move() allows it. The looser bound |x - origin|
+    /// + |v| left counted a body that an impact sends back where it came from as going on:
+    /// in a pile most impacts turn a ball round, and each such ball was searched again.
     [[nodiscard]] double needs_reach(std::uint32_t i, double t) const {
-        return length(scratch_.state[i].position - scratch_.reach[i].origin) + can_move(i, dt_ - t);
+        const EventBody& state = scratch_.state[i];
+        const double left = dt_ - t;
+        const Vector3 from = state.position - scratch_.reach[i].origin;
+        const double line = std::max(length(from), length(from + state.velocity * left));
+        return scratch_.roles[i].immovable ? line : line + gravity_reach_ * left * left;
     }
 
     /// True when body i may leave the widened sphere its candidates were found for.
@@ -728,6 +845,7 @@ private:
     double slices_per_second_;   ///< slice_count_ / dt
     std::uint32_t opened_ = 0;   ///< the slices whose events are in the heap (the first ones)
     std::size_t most_in_heap_ = 0;  ///< the most events the heap held at once this step
+    std::size_t longest_run_ = 0;   ///< the most events a slice held this step
     static constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t count_;
 };

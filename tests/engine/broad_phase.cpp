@@ -152,6 +152,49 @@ TEST_CASE("bodies_near() finds with the grid exactly the bodies and planes a tes
     CHECK(found > 3000);  // the queries did find bodies, not only empty answers
 }
 
+TEST_CASE("fine cells find the pairs and the bodies near that whole cells find", "[broad_phase][event]") {
+    // Event timing walks cells half a reach wide, each against the two around it each way; the
+    // pairs must be those of cells a reach wide (in another order), and a search again around
+    // a body must still find every body near it.
+    for (const int balls : {300, 1500, 4000}) {
+        const std::vector<RigidBody> bodies = crowd(workbook::testing::run_seed() + 11 + static_cast<std::uint64_t>(balls), balls);
+        SeededRandom random(workbook::testing::run_seed() + 12);
+        ProxySet whole;
+        whole.clear(bodies.size());
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) whole.add(bodies[i], i, 0.0, {}, random.uniform(0.0, 0.1));
+        ProxySet fine = whole;
+        fine.fine_cells = true;
+        BroadPhase whole_grid;
+        BroadPhase fine_grid;
+        std::vector<BodyPair> whole_pairs;
+        std::vector<BodyPair> fine_pairs;
+        whole_grid.find_pairs(whole, whole_pairs, false, false);
+        fine_grid.find_pairs(fine, fine_pairs, false, false);
+        REQUIRE(fine_grid.has_grid());
+        const auto order = [](BodyPair a, BodyPair b) { return a.first != b.first ? a.first < b.first : a.second < b.second; };
+        std::sort(whole_pairs.begin(), whole_pairs.end(), order);
+        std::sort(fine_pairs.begin(), fine_pairs.end(), order);
+        CAPTURE(balls, whole_pairs.size(), fine_pairs.size());
+        REQUIRE(whole_pairs.size() > static_cast<std::size_t>(balls) / 4);
+        const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
+        REQUIRE(std::equal(whole_pairs.begin(), whole_pairs.end(), fine_pairs.begin(), fine_pairs.end(), same));
+        std::vector<std::uint32_t> near_whole;
+        std::vector<std::uint32_t> near_fine;
+        for (int query = 0; query < 100; ++query) {
+            const Vector3 centre{random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0)};
+            const double radius = random.uniform(0.0, 1.3);
+            near_whole.clear();
+            near_fine.clear();
+            whole_grid.bodies_near(whole, centre, radius, near_whole);
+            fine_grid.bodies_near(fine, centre, radius, near_fine);
+            std::sort(near_whole.begin(), near_whole.end());
+            std::sort(near_fine.begin(), near_fine.end());
+            CAPTURE(query);
+            REQUIRE(near_whole == near_fine);
+        }
+    }
+}
+
 TEST_CASE("a body at NaN makes the grid fall back to every pair, with the same answer", "[broad_phase]") {
     std::vector<RigidBody> bodies{make_sphere(1, 0.5, {0, 0, 0}), make_sphere(1, 0.5, {0.5, 0, 0}),
                                   make_sphere(1, 0.5, {std::numeric_limits<double>::quiet_NaN(), 0, 0})};

@@ -63,6 +63,10 @@ struct ProxySet {
     /// `fast_travel`) whose paths may come within touching distance.
     bool swept = false;
     double fast_travel = 0.0;         ///< m; the smallest sphere radius in the world
+    /// Without a swept set: cells half as wide, each walked against the cells two around it
+    /// rather than one. Fewer pairs to test where a few large spheres set the cell width (event
+    /// timing's widened spheres in a pile), more cells to visit where they are sparse.
+    bool fine_cells = false;
     // Gathered by add() on the way, so that the grid needs no pass of its own to find them:
     Vector3 low{};                    ///< smallest coordinates of a bounded body's centre, m
     Vector3 high{};                   ///< largest, m
@@ -78,6 +82,7 @@ struct ProxySet {
         if (proxies.capacity() < count) proxies.reserve(count);
         planes.clear();
         swept = false;
+        fine_cells = false;
         constexpr double inf = std::numeric_limits<double>::infinity();
         low = {inf, inf, inf};
         high = {-inf, -inf, -inf};
@@ -220,6 +225,7 @@ private:
     double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
     double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
     double wide_travel_ = 0.0;         ///< travel above which a proxy is wide, m
+    std::uint64_t near_cells_ = 1;     ///< how many cells each way a cell is walked against
     /// A proxy that travelled further than wide_travel_ (or a NaN): see build_grid().
     [[nodiscard]] bool is_wide(const GridProxy& p) const { return !(p.travel <= wide_travel_); }
 };

@@ -118,14 +118,21 @@ struct EventScratch {
     /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
     std::vector<SphereEnd> ends;
     std::vector<BodyPair> all_pairs;       ///< the candidates that overlap at the end of the step, sorted
-    /// The pending events of the slices of the step opened so far (see slice_head), a heap:
-    /// earliest (then smallest pair) first.
+    /// The events of the slice of the step opened last (see slice_head), as it was opened:
+    /// sorted, earliest (then smallest pair) first, and taken from the front (run_next).
+    std::vector<ImpactEvent> run;
+    std::size_t run_next = 0;              ///< the first event of `run` not taken yet
+    /// The events predicted into slices already opened, a heap: earliest (then smallest pair)
+    /// first. The next event is the earlier of its top and run[run_next].
     std::vector<ImpactEvent> heap;
     /// The pending events of the later slices of the step: the step is cut into equal slices
     /// of time, and slice_head[b] is the first node of slice b's list (or none), each node an
-    /// event and the next node. A slice's events join the heap only when its time comes, so
-    /// that the heap holds a slice's events rather than the step's: in a pile of 10,000 a pop
+    /// event and the next node. A slice's events are sorted only when its time comes, so that
+    /// a sort or a heap holds a slice's events rather than the step's: in a pile of 10,000 a pop
     /// sifted through about 12 levels of a heap of thousands, a tenth of the event-timed step.
+    /// A slice is sorted once rather than kept as a heap: in the bench's pile, whose columns
+    /// bounce together, hundreds of impacts share a moment and a slice, and popping them from a
+    /// heap compared their times, equal, at every level.
     std::vector<std::uint32_t> slice_head;
     /// A pending event of a later slice: a node of its slice's list.
     struct PendingEvent {
