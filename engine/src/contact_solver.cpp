@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "workbook/probes.hpp"
+
 namespace workbook {
 
 namespace {
@@ -244,6 +246,73 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
         velocity_passes(false);
     }
 
+    // Shock propagation (settings.shock_sweeps): sweeps from the bottom up in which a contact
+    // that leans out of the horizontal pushes its upper body alone, the lower one frozen for
+    // that contact (its inverse mass and inertia zero while the chapter's functions run; the
+    // point's mass then comes from the chapter's prepare() for that frozen pair). Which body
+    // is lower comes from the contact's normal, not from levels of a search through the
+    // contacts outward from the immovable bodies: the walls of a box are immovable at every
+    // height, so such a search puts every disc against a wall on the first level however
+    // high it is, below the discs it rests on, and the sweep would push those down into the
+    // pile instead of the disc up. `up` is -gravity, not a unit vector.
+    const double up_length = length(up);
+    auto shock_sweep = [&](std::span<const Contact> list, bool velocities) {
+        auto solve_one = velocities ? hooks.solve_velocity : hooks.solve_position;
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            const std::uint32_t c = order_[k];
+            const Contact& contact = list[c];
+            RigidBody& body1 = bodies[contact.body1];
+            RigidBody& body2 = bodies[contact.body2];
+            // The normal points from body 2 to body 1: a positive lean puts body 1 above.
+            const double lean = up_length > 0.0 ? dot(contact.normal, up) / up_length : 0.0;
+            RigidBody* lower = nullptr;
+            RigidBody* upper = nullptr;
+            if (!body1.is_immovable() && !body2.is_immovable()) {
+                if (lean > settings.shock_slope) {
+                    lower = &body2;
+                    upper = &body1;
+                } else if (lean < -settings.shock_slope) {
+                    lower = &body1;
+                    upper = &body2;
+                }
+            }
+            ContactImpulses& impulses = impulses_[c];
+            if (lower == nullptr) {
+                solve_one(body1, body2, contact, impulses);
+                continue;
+            }
+            const ContactImpulses saved = impulses;
+            const double inverse_mass = lower->inverse_mass;
+            const Matrix3 inverse_inertia = lower->inverse_inertia_world;
+            lower->inverse_mass = 0.0;
+            lower->inverse_inertia_world = Matrix3::zero();
+            // prepare() fills the frozen pair's masses; what else it sets (bounce, bias, the
+            // pseudo-impulse) comes back from before, since it would be computed from the
+            // velocities the passes have changed.
+            hooks.prepare(body1, body2, contact, impulses, settings, knobs, dt);
+            for (std::size_t i = 0; i < contact.point_count; ++i) {
+                const double mass = impulses.points[i].mass;
+                impulses.points[i] = saved.points[i];
+                impulses.points[i].mass = mass;
+            }
+            const Vector3 velocity = upper->velocity, angular_velocity = upper->angular_velocity;
+            const double before = velocities ? kinetic_energy(*upper) : 0.0;
+            solve_one(body1, body2, contact, impulses);
+            lower->inverse_mass = inverse_mass;
+            lower->inverse_inertia_world = inverse_inertia;
+            for (std::size_t i = 0; i < contact.point_count; ++i) impulses.points[i].mass = saved.points[i].mass;
+            // Only the upper body changed: if it gained kinetic energy (its lower neighbour
+            // moves into it faster than it comes down), the contact is solved two-sided.
+            if (velocities && kinetic_energy(*upper) > before) {
+                upper->velocity = velocity;
+                upper->angular_velocity = angular_velocity;
+                impulses = saved;
+                solve_one(body1, body2, contact, impulses);
+            }
+        }
+    };
+    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(contacts, true);
+
     // The move of this step used the velocities before the solve; the solve's change of them
     // belongs to this step too (as when the solve comes before the move, the order of Box2D
     // and Chipmunk): each body moves by that change times dt, and each point's depth is
@@ -286,7 +355,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     bool any_bias = false;
     for (std::size_t c = 0; c < contacts.size() && !any_bias; ++c)
         for (std::size_t i = 0; i < contacts[c].point_count; ++i) any_bias = any_bias || impulses_[c].points[i].bias > 0.0;
-    if (any_bias && settings.position_iterations > 0) {
+    if (any_bias && (settings.position_iterations > 0 || (settings.shock_position && settings.shock_sweeps > 0))) {
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             saved_velocity_[b] = bodies[b].velocity;
             saved_angular_velocity_[b] = bodies[b].angular_velocity;
@@ -304,6 +373,8 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             report.position_residual = largest;
             if (!(largest > settings.tolerance)) break;
         }
+        if (settings.shock_position)
+            for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(adjusted_, false);
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             RigidBody& body = bodies[b];
             if (!body.is_immovable()) {
