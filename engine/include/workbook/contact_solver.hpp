@@ -176,8 +176,11 @@ public:
     ///     up to as many passes again along the normals alone for the bounce (Newton's
     ///     restitution solved together with friction can create energy); the change of
     ///     velocity also moves each body over this step (as if the solve had come before the
-    ///     move), and each point's depth is estimated after that move;
-    ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
+    ///     move), and each point's depth is estimated after that move; with
+    ///     settings.shock_sweeps, the sweeps of shock propagation follow the passes (their
+    ///     change of the velocities moves the bodies too);
+    ///  3. up to position_iterations passes on pseudo-velocities that start at zero (and
+    ///     with settings.shock_position the sweeps again);
     ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
     ///
     /// With settings.substeps > 0 the step is solved in substeps instead (see
