@@ -93,7 +93,6 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.relax_passes = knobs.relax_passes;
     settings.contact_solver.shock_sweeps = knobs.shock_sweeps;
     settings.contact_solver.shock_slope = knobs.shock_slope;
-    settings.contact_solver.shock_position = knobs.shock_position;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
     const double seconds = timed_steps(steps, budget, [&world] { world.step(); });

@@ -79,7 +79,6 @@ struct PileKnobs {
     int relax_passes = ContactSolverSettings{}.relax_passes;  ///< ContactSolverSettings::relax_passes
     int shock_sweeps = ContactSolverSettings{}.shock_sweeps;     ///< ContactSolverSettings::shock_sweeps
     double shock_slope = ContactSolverSettings{}.shock_slope;    ///< ContactSolverSettings::shock_slope
-    bool shock_position = ContactSolverSettings{}.shock_position;  ///< ContactSolverSettings::shock_position
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

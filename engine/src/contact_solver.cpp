@@ -256,8 +256,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // high it is, below the discs it rests on, and the sweep would push those down into the
     // pile instead of the disc up. `up` is -gravity, not a unit vector.
     const double up_length = length(up);
-    auto shock_sweep = [&](std::span<const Contact> list, bool velocities) {
-        auto solve_one = velocities ? hooks.solve_velocity : hooks.solve_position;
+    auto shock_sweep = [&](std::span<const Contact> list) {
         for (std::size_t k = 0; k < order_.size(); ++k) {
             const std::uint32_t c = order_[k];
             const Contact& contact = list[c];
@@ -278,7 +277,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             }
             ContactImpulses& impulses = impulses_[c];
             if (lower == nullptr) {
-                solve_one(body1, body2, contact, impulses);
+                hooks.solve_velocity(body1, body2, contact, impulses);
                 continue;
             }
             const ContactImpulses saved = impulses;
@@ -296,22 +295,22 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
                 impulses.points[i].mass = mass;
             }
             const Vector3 velocity = upper->velocity, angular_velocity = upper->angular_velocity;
-            const double before = velocities ? kinetic_energy(*upper) : 0.0;
-            solve_one(body1, body2, contact, impulses);
+            const double before = kinetic_energy(*upper);
+            hooks.solve_velocity(body1, body2, contact, impulses);
             lower->inverse_mass = inverse_mass;
             lower->inverse_inertia_world = inverse_inertia;
             for (std::size_t i = 0; i < contact.point_count; ++i) impulses.points[i].mass = saved.points[i].mass;
             // Only the upper body changed: if it gained kinetic energy (its lower neighbour
             // moves into it faster than it comes down), the contact is solved two-sided.
-            if (velocities && kinetic_energy(*upper) > before) {
+            if (kinetic_energy(*upper) > before) {
                 upper->velocity = velocity;
                 upper->angular_velocity = angular_velocity;
                 impulses = saved;
-                solve_one(body1, body2, contact, impulses);
+                hooks.solve_velocity(body1, body2, contact, impulses);
             }
         }
     };
-    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(contacts, true);
+    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(contacts);
 
     // The move of this step used the velocities before the solve; the solve's change of them
     // belongs to this step too (as when the solve comes before the move, the order of Box2D
@@ -355,7 +354,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     bool any_bias = false;
     for (std::size_t c = 0; c < contacts.size() && !any_bias; ++c)
         for (std::size_t i = 0; i < contacts[c].point_count; ++i) any_bias = any_bias || impulses_[c].points[i].bias > 0.0;
-    if (any_bias && (settings.position_iterations > 0 || (settings.shock_position && settings.shock_sweeps > 0))) {
+    if (any_bias && settings.position_iterations > 0) {
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             saved_velocity_[b] = bodies[b].velocity;
             saved_angular_velocity_[b] = bodies[b].angular_velocity;
@@ -373,8 +372,6 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             report.position_residual = largest;
             if (!(largest > settings.tolerance)) break;
         }
-        if (settings.shock_position)
-            for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(adjusted_, false);
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             RigidBody& body = bodies[b];
             if (!body.is_immovable()) {

@@ -296,8 +296,7 @@ TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world]
 }
 
 TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[world][allocation][contact-solver][shock]") {
-    // The scene above, solved in one solve a step with two sweeps after the velocity passes
-    // and two after the position passes.
+    // The scene above, solved in one solve a step with two sweeps after the velocity passes.
     std::vector<RigidBody> bodies;
     for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
     bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
@@ -305,7 +304,6 @@ TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[
     WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
     settings.position_correction = {0.2, 0.001};
     settings.contact_solver.shock_sweeps = 2;
-    settings.contact_solver.shock_position = true;
     settings.contact_solver.sleeping = false;
     World world(std::move(bodies), settings, testing::solver_model);
     world.step();

@@ -110,13 +110,6 @@ struct ContactSolverSettings {
     /// With shock_sweeps: the sine of the smallest lean of a contact's normal out of the
     /// horizontal for its lower body to count as immovable.
     double shock_slope = 0.1;
-    /// With shock_sweeps: the sweeps also follow the position passes, on the pseudo-velocities.
-    /// Off by default: a one-sided push lifts everything above it, by the sum of the pushes
-    /// below, and bodies lifted clear of their contacts fall back with nothing to stop them
-    /// in the velocity passes, most likely the energy measured: a packed block of discs that
-    /// the velocity sweep brings to rest at 15 passes keeps 7 J with this on, and the pile of
-    /// 2,000 discs ends at 31 J (docs/performance.md).
-    bool shock_position = false;
     /// Islands of bodies that stand still fall asleep and cost nothing until touched
     /// (workbook/sleeping.hpp).
     bool sleeping = true;
@@ -180,8 +173,7 @@ public:
     ///     move), and each point's depth is estimated after that move; with
     ///     settings.shock_sweeps, the sweeps of shock propagation follow the passes (their
     ///     change of the velocities moves the bodies too);
-    ///  3. up to position_iterations passes on pseudo-velocities that start at zero (and
-    ///     with settings.shock_position the sweeps again);
+    ///  3. up to position_iterations passes on pseudo-velocities that start at zero;
     ///     each body then moves by its pseudo-velocity times dt, and they are forgotten.
     ///
     /// With settings.substeps > 0 the step is solved in substeps instead (see
