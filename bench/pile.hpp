@@ -77,6 +77,8 @@ struct PileKnobs {
     double hertz = 30.0;      ///< ContactSolverSettings::contact_hertz
     bool sleeping = true;     ///< ContactSolverSettings::sleeping
     int relax_passes = ContactSolverSettings{}.relax_passes;  ///< ContactSolverSettings::relax_passes
+    int shock_sweeps = ContactSolverSettings{}.shock_sweeps;     ///< ContactSolverSettings::shock_sweeps
+    double shock_slope = ContactSolverSettings{}.shock_slope;    ///< ContactSolverSettings::shock_slope
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

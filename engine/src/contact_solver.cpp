@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "workbook/probes.hpp"
+
 namespace workbook {
 
 namespace {
@@ -243,6 +245,72 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             for (std::size_t i = 0; i < max_contact_points; ++i) impulses_[c].points[i].bounce = bounces_[c * max_contact_points + i];
         velocity_passes(false);
     }
+
+    // Shock propagation (settings.shock_sweeps): sweeps from the bottom up in which a contact
+    // that leans out of the horizontal pushes its upper body alone, the lower one frozen for
+    // that contact (its inverse mass and inertia zero while the chapter's functions run; the
+    // point's mass then comes from the chapter's prepare() for that frozen pair). Which body
+    // is lower comes from the contact's normal, not from levels of a search through the
+    // contacts outward from the immovable bodies: the walls of a box are immovable at every
+    // height, so such a search puts every disc against a wall on the first level however
+    // high it is, below the discs it rests on, and the sweep would push those down into the
+    // pile instead of the disc up. `up` is -gravity, not a unit vector.
+    const double up_length = length(up);
+    auto shock_sweep = [&](std::span<const Contact> list) {
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            const std::uint32_t c = order_[k];
+            const Contact& contact = list[c];
+            RigidBody& body1 = bodies[contact.body1];
+            RigidBody& body2 = bodies[contact.body2];
+            // The normal points from body 2 to body 1: a positive lean puts body 1 above.
+            const double lean = up_length > 0.0 ? dot(contact.normal, up) / up_length : 0.0;
+            RigidBody* lower = nullptr;
+            RigidBody* upper = nullptr;
+            if (!body1.is_immovable() && !body2.is_immovable()) {
+                if (lean > settings.shock_slope) {
+                    lower = &body2;
+                    upper = &body1;
+                } else if (lean < -settings.shock_slope) {
+                    lower = &body1;
+                    upper = &body2;
+                }
+            }
+            ContactImpulses& impulses = impulses_[c];
+            if (lower == nullptr) {
+                hooks.solve_velocity(body1, body2, contact, impulses);
+                continue;
+            }
+            const ContactImpulses saved = impulses;
+            const double inverse_mass = lower->inverse_mass;
+            const Matrix3 inverse_inertia = lower->inverse_inertia_world;
+            lower->inverse_mass = 0.0;
+            lower->inverse_inertia_world = Matrix3::zero();
+            // prepare() fills the frozen pair's masses; what else it sets (bounce, bias, the
+            // pseudo-impulse) comes back from before, since it would be computed from the
+            // velocities the passes have changed.
+            hooks.prepare(body1, body2, contact, impulses, settings, knobs, dt);
+            for (std::size_t i = 0; i < contact.point_count; ++i) {
+                const double mass = impulses.points[i].mass;
+                impulses.points[i] = saved.points[i];
+                impulses.points[i].mass = mass;
+            }
+            const Vector3 velocity = upper->velocity, angular_velocity = upper->angular_velocity;
+            const double before = kinetic_energy(*upper);
+            hooks.solve_velocity(body1, body2, contact, impulses);
+            lower->inverse_mass = inverse_mass;
+            lower->inverse_inertia_world = inverse_inertia;
+            for (std::size_t i = 0; i < contact.point_count; ++i) impulses.points[i].mass = saved.points[i].mass;
+            // Only the upper body changed: if it gained kinetic energy (its lower neighbour
+            // moves into it faster than it comes down), the contact is solved two-sided.
+            if (kinetic_energy(*upper) > before) {
+                upper->velocity = velocity;
+                upper->angular_velocity = angular_velocity;
+                impulses = saved;
+                hooks.solve_velocity(body1, body2, contact, impulses);
+            }
+        }
+    };
+    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(contacts);
 
     // The move of this step used the velocities before the solve; the solve's change of them
     // belongs to this step too (as when the solve comes before the move, the order of Box2D

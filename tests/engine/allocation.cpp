@@ -295,6 +295,23 @@ TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world]
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
 }
 
+TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[world][allocation][contact-solver][shock]") {
+    // The scene above, solved in one solve a step with two sweeps after the velocity passes.
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver.shock_sweeps = 2;
+    settings.contact_solver.sleeping = false;
+    World world(std::move(bodies), settings, testing::solver_model);
+    world.step();
+    const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
+    CHECK(allocated == 0);
+    CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
+}
+
 TEST_CASE("once warm, event timing allocates nothing, in a gas and in a bouncing pile", "[world][allocation][event]") {
     // The event loop's lists (candidates, pending events, the impacts' contacts) grow while the
     // scene warms up and keep their capacity; after that a step finds room in them.
