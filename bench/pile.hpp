@@ -77,6 +77,7 @@ struct PileKnobs {
     double hertz = 30.0;      ///< ContactSolverSettings::contact_hertz
     bool sleeping = true;     ///< ContactSolverSettings::sleeping
     int relax_passes = ContactSolverSettings{}.relax_passes;  ///< ContactSolverSettings::relax_passes
+    double speculative_distance = 0.0;  ///< m, ContactSolverSettings::speculative_distance (0: off)
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

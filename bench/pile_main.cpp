@@ -1,6 +1,6 @@
 // workbook-pile [ENGINE] N [seconds] [velocity iterations] [position iterations] [warm start 0/1] [fraction] [slop]
 //               [swept 0/1] [tolerance] [substeps] [contact hertz]
-//               [sleeping 0/1] [relax passes] [--budget SECONDS]
+//               [sleeping 0/1] [relax passes] [speculative distance] [--budget SECONDS]
 // runs the pile of pile.hpp in one engine (workbook, the default, chipmunk, box2d or bullet; the
 // knobs after `seconds` are the workbook's) and prints one CSV line:
 //   engine,N,ms_per_step,deepest_m,kinetic_J,mean_height_m,outside
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         std::fprintf(stderr, "usage: workbook-pile [workbook|chipmunk|box2d|bullet] N [seconds] [velocity_iterations] "
-                             "[position_iterations] [warm_start] [fraction] [slop] [swept] [tolerance] [substeps] [hertz] [sleeping] [relax passes] [--budget SECONDS]\n");
+                             "[position_iterations] [warm_start] [fraction] [slop] [swept] [tolerance] [substeps] [hertz] [sleeping] [relax passes] [speculative distance] [--budget SECONDS]\n");
         return 2;
     }
     if (engine != "workbook" && peer(engine) == nullptr) {
@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
         if (args.size() > 10) knobs.hertz = std::stod(args[10]);
         if (args.size() > 11) knobs.sleeping = std::stoi(args[11]) != 0;
         if (args.size() > 12) knobs.relax_passes = std::stoi(args[12]);
+        if (args.size() > 13) knobs.speculative_distance = std::stod(args[13]);
         const Pile pile = make_pile(count);
         const int steps = static_cast<int>(seconds / Pile::time_step + 0.5);
         const PileResult r = engine == "workbook" ? run_pile_workbook(pile, steps, knobs, budget) : peer(engine)(pile, steps, budget);

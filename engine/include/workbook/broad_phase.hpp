@@ -63,6 +63,9 @@ struct ProxySet {
     /// `fast_travel`) whose paths may come within touching distance.
     bool swept = false;
     double fast_travel = 0.0;         ///< m; the smallest sphere radius in the world
+    /// Also pair bodies whose bounding spheres are apart by less than this, m (speculative
+    /// contacts, ContactSolverSettings::speculative_distance; 0 for none). Set after gathering.
+    double margin = 0.0;
     // Gathered by add() on the way, so that the grid needs no pass of its own to find them:
     Vector3 low{};                    ///< smallest coordinates of a bounded body's centre, m
     Vector3 high{};                   ///< largest, m
@@ -78,6 +81,7 @@ struct ProxySet {
         if (proxies.capacity() < count) proxies.reserve(count);
         planes.clear();
         swept = false;
+        margin = 0.0;
         constexpr double inf = std::numeric_limits<double>::infinity();
         low = {inf, inf, inf};
         high = {-inf, -inf, -inf};
@@ -150,7 +154,7 @@ class BroadPhase {
 public:
     /// Finds, for the gathered `set`, every pair whose bounding spheres overlap (a conservative
     /// test: the narrow phase decides), plus every body-plane pair whose sphere reaches the
-    /// plane, leaving out pairs of two immovable bodies unless `immovable_pairs`; sorted. With
+    /// plane (both within `set.margin`), leaving out pairs of two immovable bodies unless `immovable_pairs`; sorted. With
     /// `set.swept`, also the swept test's candidates (see sweep_partners()). Allocates only
     /// when the scene grew. With `sorted` false the pairs come in no particular order (event
     /// timing sorts only the few it keeps: the sort is a third of the grid's time in a pile).
@@ -217,6 +221,7 @@ private:
     std::uint64_t cells_[3] = {1, 1, 1};
     double slack_ = 0.0;               ///< absolute room for rounding in the swept reach, m
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
+    double margin_ = 0.0;              ///< the set's margin (ProxySet::margin), m
     double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
     double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
     double wide_travel_ = 0.0;         ///< travel above which a proxy is wide, m

@@ -201,6 +201,9 @@ private:
     /// Stage 1; with `gather`, fills proxies_ in the same pass (and the swept test's starts
     /// when `swept`). Returns 0 when every body is finite afterwards, NaN otherwise.
     double integrate_bodies(bool gather, bool swept);
+    /// How far apart a pair may be and still get a contact, m: the speculative distance of
+    /// the contact solver (ContactSolverSettings::speculative_distance), 0 without one.
+    [[nodiscard]] double contact_margin() const;
     /// True when detect() uses the grid for this world's size and shortcuts.
     [[nodiscard]] bool uses_grid() const;
     /// The guard for a stage that changed only the bodies `changed`.
