@@ -129,7 +129,8 @@ public:
     /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
     /// broad phase's proxies in the same pass, for the detect() that follows.
     void integrate();
-    /// Stage 2: fills contacts() with every overlapping pair, then (discrete timing, swept
+    /// Stage 2: fills contacts() with every overlapping pair (and, with speculative contacts,
+    /// every sphere and plane pair within ContactSolverSettings::speculative_distance), then (discrete timing, swept
     /// spheres on) traces each fast sphere along its path (swept_spheres.hpp). Right after
     /// integrate_impact_to_impact(), only the pairs whose bodies came near each other are tried.
     void detect();
