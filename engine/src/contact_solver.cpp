@@ -359,8 +359,8 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
 }
 
 void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected,
-                                      std::span<const Contact> contacts, const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
-                                      const PositionCorrection& knobs, double dt, const Vector3& gravity,
+                                      std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                                      const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt, const Vector3& gravity,
                                       double gravity_position_factor, std::span<const std::uint8_t> woken,
                                       ContactSolverReport& report) {
     const int n = settings.substeps;
