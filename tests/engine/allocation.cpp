@@ -310,6 +310,8 @@ TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[
     const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
     CHECK(allocated == 0);
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
+}
+
 TEST_CASE("the contact solver with speculative contacts allocates nothing once warm",
           "[world][allocation][contact-solver][speculative]") {
     // The scene above, with speculative contacts, solved in one solve and in substeps: the
