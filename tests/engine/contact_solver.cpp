@@ -314,6 +314,10 @@ World jammed_block(int columns, int rows, int sweeps) {
     settings.position_correction = {0.5, 0.002};
     settings.contact_solver = {.velocity_iterations = 15, .position_iterations = 15, .shock_sweeps = sweeps, .sleeping = false};
     return World(std::move(bodies), settings, model);
+}
+}  // namespace
+
+
 namespace {
 
 /// The doubles' functions, with a prepare that records the shallowest depth it was handed:
@@ -394,6 +398,8 @@ TEST_CASE("Shock sweep: a packed block of balls jammed wall to wall comes to res
     for (const Contact& contact : world.contacts()) deepest = std::max(deepest, contact.penetration);
     CHECK(world.probes().kinetic() < 1e-8);
     CHECK(deepest < 0.005);
+}
+
 TEST_CASE("Speculative contacts: a ball pushed into a neighbour it does not touch yet stops touching it, not in it",
           "[engine][contact-solver][speculative]") {
     // A runs into B, and B, pushed at 1.2 m/s (2 cm a step), into C 2 mm away. Without
