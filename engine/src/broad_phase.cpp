@@ -61,6 +61,10 @@ bool is_fast(const ProxySet& set, const GridProxy& p) {
     return set.swept && p.movable && p.sphere && p.travel > set.fast_travel;
 }
 
+/// Whether the swept test traces a proxy as the grid keeps it (never one of a set without it).
+bool fast(const GridProxy& p) { return p.fast; }
+bool fast(const CellProxy&) { return false; }
+
 /// The proxy with its fast flag set, as the grid keeps it.
 GridProxy with_fast_flag(const ProxySet& set, GridProxy p) {
     p.fast = is_fast(set, p);
@@ -189,7 +193,10 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         ++in_grid;
     }
     for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-    resize_with_room(by_cell_, in_grid);
+    // A set without the swept test needs only the compact copies (CellProxy).
+    small_cells_ = !set.swept;
+    if (small_cells_) resize_with_room(small_by_cell_, in_grid);
+    else resize_with_room(by_cell_, in_grid);
     // Copies, not indices: the walk below then reads memory in order (at N = 100,000 the
     // indirection through an index array made the pass 1.6 times slower). cell_start_[c] walks
     // forward while filling; afterwards cell c spans [old start of c, start of c + 1).
@@ -203,8 +210,11 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         if (cell_of_[k] == not_in_grid) continue;
         const std::uint32_t slot = cell_start_[cell_of_[k]]++;
         const GridProxy& p = set.proxies[k];
+        if (small_cells_) {
+            small_by_cell_[slot] = {p.x, p.y, p.z, p.radius, p.index, p.movable};
+            continue;
+        }
         by_cell_[slot] = with_fast_flag(set, p);
-        if (!set.swept) continue;
         const double own_reach = p.radius + p.travel;
         // A wide sphere is large too, whatever its reach: it makes its own search, and nobody
         // else's search takes it in (is_large() below), so that each pair is met once.
@@ -261,7 +271,7 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     const std::uint64_t around = near_cells_;
     const std::uint32_t* start = cell_start_.data();
     const GridProxy* proxies = by_cell_.data();
-    auto walk = [&](auto&& test) {
+    auto walk = [&](const auto* cells, auto&& test) {
         for (std::uint64_t z = 0; z < nz; ++z) {
             for (std::uint64_t y = 0; y < ny; ++y) {
                 const std::uint64_t row = (z * ny + y) * nx;
@@ -284,23 +294,23 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
                     }
                     const std::uint32_t own_end = start[row + x1 + 1];
                     for (std::uint32_t s = begin; s < end; ++s) {
-                        const GridProxy& p = proxies[s];
-                        for (std::uint32_t t = s + 1; t < own_end; ++t) test(p, proxies[t]);
+                        const auto& p = cells[s];
+                        for (std::uint32_t t = s + 1; t < own_end; ++t) test(p, cells[t]);
                         for (int r = 0; r < count; ++r)
-                            for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) test(p, proxies[t]);
+                            for (std::uint32_t t = ranges[r][0]; t < ranges[r][1]; ++t) test(p, cells[t]);
                     }
                 }
             }
         }
     };
     if (set.swept) {
-        walk(pair);
+        walk(proxies, pair);
     } else {
         // Without a swept set every travel is 0 and no sphere is fast, and pair() comes down to
         // its second test (the first, wider by a relative slack, passes whenever it does):
         // that test alone, as event timing's widened spheres and worlds without the swept test
-        // ask.
-        walk([&](const GridProxy& p, const GridProxy& q) {
+        // ask. Over the compact copies, which hold all it reads.
+        walk(small_by_cell_.data(), [&](const CellProxy& p, const CellProxy& q) {
             const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
             const double d2 = dx * dx + dy * dy + dz * dz;
             const double radii = p.radius + q.radius;
@@ -361,7 +371,7 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
 }
 
 void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) {
-    auto test = [&](const GridProxy& p, const PlaneProxy& u) {
+    auto test = [&](const auto& p, const PlaneProxy& u) {
         // The height of the centre above the plane, as the narrow phase computes it.
         const Vector3 offset{p.x - u.point.x, p.y - u.point.y, p.z - u.point.z};
         const double height = dot(offset, u.normal);
@@ -373,7 +383,7 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
         }
         // The swept test's own condition for a plane (swept_spheres.cpp): the centre ended
         // behind it. Written as its negation so that a NaN is kept, as it is there.
-        if (p.fast && !((height - p.radius) + p.radius >= 0.0)) sweep_pairs_.push_back({p.index, u.index | partner_may_touch});
+        if (fast(p) && !((height - p.radius) + p.radius >= 0.0)) sweep_pairs_.push_back({p.index, u.index | partner_may_touch});
     };
     const std::uint64_t nx = cells_[0], ny = cells_[1], nz = cells_[2];
     const double cell = 1.0 / inverse_cell_;
@@ -406,7 +416,10 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
                 } else if (!(h0 <= reach)) {
                     continue;
                 }
-                for (std::uint32_t s = cell_start_[row + x0]; s < cell_start_[row + x1 + 1]; ++s) test(by_cell_[s], u);
+                for (std::uint32_t s = cell_start_[row + x0]; s < cell_start_[row + x1 + 1]; ++s) {
+                    if (small_cells_) test(small_by_cell_[s], u);
+                    else test(by_cell_[s], u);
+                }
             }
         }
     }
@@ -436,7 +449,7 @@ void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs, bool 
 
 void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double radius,
                              std::vector<std::uint32_t>& out) const {
-    const auto near = [&](const GridProxy& q) {
+    const auto near = [&](const auto& q) {
         const double within = (radius + q.radius) * (1.0 + tolerances::conservative_slack);
         const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
         return dx * dx + dy * dy + dz * dz <= within * within;
@@ -470,8 +483,13 @@ void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double 
     for (std::uint64_t z = from[2]; z <= to[2]; ++z)
         for (std::uint64_t y = from[1]; y <= to[1]; ++y) {
             const std::uint64_t row = (z * ny + y) * nx;
-            for (std::uint32_t t = cell_start_[row + from[0]]; t < cell_start_[row + to[0] + 1]; ++t)
-                if (near(by_cell_[t])) out.push_back(by_cell_[t].index);
+            for (std::uint32_t t = cell_start_[row + from[0]]; t < cell_start_[row + to[0] + 1]; ++t) {
+                if (small_cells_) {
+                    if (near(small_by_cell_[t])) out.push_back(small_by_cell_[t].index);
+                } else if (near(by_cell_[t])) {
+                    out.push_back(by_cell_[t].index);
+                }
+            }
         }
 }
 

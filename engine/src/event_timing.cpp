@@ -56,18 +56,25 @@ double reach_towards(const RigidBody& body, const Vector3& normal) {
            h.z * std::abs(axes(0, 2) * normal.x + axes(1, 2) * normal.y + axes(2, 2) * normal.z);
 }
 
-/// A sphere, or a box that does not spin, against a plane: its lowest point towards the plane
-/// moves with the centre, along the same parabola, so the gap is a quadratic in t.
-std::optional<double> sphere_plane(const RigidBody& sphere, const RigidBody& plane, const Vector3& gravity, double k,
-                                   double limit) {
-    if (sphere.is_immovable()) return std::nullopt;
-    const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
-    const double reach = reach_towards(sphere, normal);
-    const double gap = dot(sphere.position - plane.position, normal) - reach;
+/// What the time of impact with a plane reads of the plane: the event loop hands it over from
+/// its compact copies (EventBody and EventScratch::normals), time_of_impact() from the body.
+struct PlaneMotion {
+    Vector3 position;  ///< m, a point of the plane
+    Vector3 velocity;  ///< m/s (a kinematic plane's; an immovable one has none)
+    Vector3 normal;    ///< its unit normal in the world
+};
+
+/// A movable body whose lowest point towards a plane is `reach` below its centre, the centre at
+/// `position` moving at `velocity`, against the plane: that point moves with the centre, along
+/// the same parabola, so the gap is a quadratic in t.
+std::optional<double> lowest_point_plane(const Vector3& position, const Vector3& velocity, double reach,
+                                         const PlaneMotion& plane, const Vector3& gravity, double k, double limit) {
+    const Vector3& normal = plane.normal;
+    const double gap = dot(position - plane.position, normal) - reach;
     // A kinematic plane moves at its set velocity (an immovable one has none).
-    const double rate = dot(sphere.velocity - plane.velocity, normal);
+    const double rate = dot(velocity - plane.velocity, normal);
     const double curvature = k * dot(gravity, normal);  // gap(t) = gap + rate t + curvature t^2
-    const double scale = std::abs(dot(sphere.position - plane.position, normal)) + reach;
+    const double scale = std::abs(dot(position - plane.position, normal)) + reach;
     if (std::abs(gap) <= touching_tolerance * scale) {
         if (rate < 0.0) return 0.0;
         // Just bounced (or resting): the next touch is where the parabola comes back down.
@@ -82,6 +89,14 @@ std::optional<double> sphere_plane(const RigidBody& sphere, const RigidBody& pla
     // for. Most steps of a falling or flying ball end here, without a square root or a division.
     if (gap + std::min(rate, 0.0) * limit + std::min(curvature, 0.0) * (limit * limit) > 0.0) return std::nullopt;
     return first_positive_root(curvature, rate, gap, limit);
+}
+
+/// A sphere, or a box that does not spin, against a plane (lowest_point_plane()).
+std::optional<double> sphere_plane(const RigidBody& sphere, const RigidBody& plane, const Vector3& gravity, double k,
+                                   double limit) {
+    if (sphere.is_immovable()) return std::nullopt;
+    const PlaneMotion seen{plane.position, plane.velocity, rotate(plane.orientation, plane.shape.normal)};
+    return lowest_point_plane(sphere.position, sphere.velocity, reach_towards(sphere, seen.normal), seen, gravity, k, limit);
 }
 
 /// |d + u t + A t^2|^2 - R^2 for the quartic case.
@@ -443,6 +458,7 @@ public:
         EventScratch& s = scratch_;
         s.state.resize(count_);
         s.roles.resize(count_);
+        s.normals.resize(count_);
         s.events.assign(count_, 0);
         s.reach.resize(count_);
         s.extra.clear();
@@ -565,6 +581,7 @@ public:
         scratch_.state[i] = {body.position, body.velocity, t, bounding_radius(body)};
         scratch_.roles[i] = {takes_part(body), body.is_immovable(), body.shape.kind == ShapeKind::sphere,
                              body.shape.kind == ShapeKind::plane};
+        if (body.shape.kind == ShapeKind::plane) scratch_.normals[i] = rotate(body.orientation, body.shape.normal);
     }
 
     /// After an event at time t: body i's impacts are predicted again with each candidate but
@@ -694,6 +711,13 @@ private:
             predict_spheres(a, seen_at(a, t), b, t);
             return;
         }
+        // A sphere and a plane too: through the bodies (bodies_meet()), each prediction read
+        // both and wrote them back, and a plane's events predict it again with every ball
+        // above it (a pile's floor: a tenth of the balls).
+        if ((role_a.sphere && role_b.plane) || (role_a.plane && role_b.sphere)) {
+            predict_sphere_plane(role_a.sphere ? a : b, role_a.sphere ? b : a, t);
+            return;
+        }
         const double tau = may_meet(a, b) ? bodies_meet(a, b, t).value_or(no_impact) : no_impact;
         if (tau != no_impact) push_impact(a, b, t + tau);
     }
@@ -705,6 +729,20 @@ private:
     void predict_spheres(std::uint32_t a, const SphereMotion& seen_a, std::uint32_t b, double t) {
         const SpherePair pair = relative_motion(seen_a, seen_at(b, t), gravity_, k_);
         if (!cannot_meet_soon(pair, dt_ - t)) time_spheres(a, b, pair, t);
+    }
+
+    /// predict() for a sphere and a plane that take part (not both immovable), from the compact
+    /// copies: sphere_plane()'s arithmetic on the numbers SeenAfter would show it, so the same
+    /// answer bit for bit.
+    void predict_sphere_plane(std::uint32_t sphere, std::uint32_t plane, double t) {
+        if (scratch_.roles[sphere].immovable) return;
+        const SphereMotion seen_sphere = seen_at(sphere, t);
+        const SphereMotion seen_plane = seen_at(plane, t);
+        const PlaneMotion seen{seen_plane.position, seen_plane.velocity, scratch_.normals[plane]};
+        const double tau =
+            lowest_point_plane(seen_sphere.position, seen_sphere.velocity, seen_sphere.radius, seen, gravity_, k_, dt_ - t)
+                .value_or(no_impact);
+        if (tau != no_impact) push_impact(sphere, plane, t + tau);
     }
 
     /// The rest of predict_spheres() for a pair that cannot_meet_soon() did not rule out.

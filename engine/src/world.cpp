@@ -88,9 +88,14 @@ void World::keep_answered_impacts() {
     // The contacts answered at their moment come first, in the order they were answered. Room
     // made first by doubling the capacity: an insert grows the vector to twice its size, which
     // in a pile whose contacts grow step by step was just over what it had, again and again.
-    const std::size_t needed = contacts_.size() + event_scratch_.contacts.size();
-    if (contacts_.capacity() < needed) contacts_.reserve(std::max(needed, 2 * contacts_.capacity()));
-    contacts_.insert(contacts_.begin(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
+    // detect() put them there already, unless the bodies were changed in between (bodies()).
+    if (!impacts_placed_) {
+        const std::size_t needed = contacts_.size() + event_scratch_.contacts.size();
+        if (contacts_.capacity() < needed) contacts_.reserve(std::max(needed, 2 * contacts_.capacity()));
+        contacts_.insert(contacts_.begin(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
+    }
+    impacts_placed_ = false;
+    answered_first_ = 0;
 }
 
 void World::guard(const char* stage) const {
@@ -189,11 +194,20 @@ void World::gather_body(std::uint32_t i, bool swept, double dt, const Vector3& g
 }
 
 void World::detect() {
+    impacts_placed_ = false;
+    answered_first_ = 0;
     if (impacts_fresh_) {
         // After integrate_impact_to_impact(), which found the overlapping pairs among those
         // whose bodies came near each other, in index order as below.
         impacts_fresh_ = false;
         contacts_.clear();
+        // The impacts' contacts go first, where the step leaves them (keep_answered_impacts()),
+        // put there now rather than moved in front of the pairs found below once the step is
+        // answered: in a pile that moved two contacts per body every step. respond() and
+        // correct() pass over them (they were answered at their moment).
+        contacts_.insert(contacts_.end(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
+        answered_first_ = event_scratch_.contacts.size();
+        impacts_placed_ = true;
         used_broad_phase_ = impacts_.used_grid;
         for (const auto [i, j] : impacts_.overlapping_pairs) add_contact_if_any(i, j);
         return;
@@ -302,8 +316,9 @@ double World::respond_contacts() {
     if (model_.respond == nullptr) return 0.0;
     // The guard's check of the two bodies rides along, while they are in cache.
     double sum = 0.0;
+    const std::span<const Contact> contacts = unanswered_contacts();
     if (!shortcuts_.response_energy_probe) {
-        for (const Contact& contact : contacts_) {
+        for (const Contact& contact : contacts) {
             RigidBody& body1 = bodies_[contact.body1];
             RigidBody& body2 = bodies_[contact.body2];
             model_.respond(body1, body2, contact);
@@ -311,7 +326,7 @@ double World::respond_contacts() {
         }
         return sum;
     }
-    for (const Contact& contact : contacts_) {
+    for (const Contact& contact : contacts) {
         RigidBody& body1 = bodies_[contact.body1];
         RigidBody& body2 = bodies_[contact.body2];
         const double before = kinetic_energy(body1) + kinetic_energy(body2);
@@ -379,7 +394,7 @@ void World::solve_contacts() {
 double World::correct_contacts() {
     if (model_.correct == nullptr) return 0.0;
     double sum = 0.0;
-    for (const Contact& contact : contacts_) {
+    for (const Contact& contact : unanswered_contacts()) {
         RigidBody& body1 = bodies_[contact.body1];
         RigidBody& body2 = bodies_[contact.body2];
         model_.correct(body1, body2, contact, settings_.position_correction);

@@ -97,6 +97,7 @@ struct EventReach {
 struct EventScratch {
     std::vector<EventBody> state;          ///< per body: what a prediction reads (EventBody)
     std::vector<EventRole> roles;          ///< per body: what kind of body it is for the loop
+    std::vector<Vector3> normals;          ///< per body: a plane's unit normal in the world (unset for other shapes)
     std::vector<EventReach> reach;         ///< per body: where it started the step, how far it may get
     std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
     ProxySet proxies;                      ///< the bodies at the start of the step, widened by their reach

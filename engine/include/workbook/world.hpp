@@ -123,7 +123,8 @@ public:
     /// Under event timing, integrate_impact_to_impact() takes integrate()'s place: the bodies
     /// move from impact to impact within the step, each answered at its moment
     /// (event_timing.hpp); the same detect(), respond() and correct() then answer what still
-    /// overlaps, and keep_answered_impacts() puts the impacts' contacts first.
+    /// overlaps (detect() puts the impacts' contacts first, and respond() and correct() pass
+    /// over them), and keep_answered_impacts() ends the step.
     void step();
 
     /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
@@ -140,8 +141,9 @@ public:
     /// impact answered at its moment by the model's responder (move_impact_to_impact(),
     /// event_timing.hpp); the detect() that follows looks only among the pairs that came near.
     void integrate_impact_to_impact();
-    /// Last under event timing: the impacts answered in integrate_impact_to_impact() go first in
-    /// contacts(), and the energy they changed joins response_energy_change.
+    /// Last under event timing: the impacts answered in integrate_impact_to_impact() are first in
+    /// contacts() (detect() put them there, unless the bodies were changed since: then here),
+    /// and the energy they changed joins response_energy_change.
     void keep_answered_impacts();
     /// Stages 3 and 4 for a model with a contact solver: all contacts of the step together.
     void solve_contacts();
@@ -166,7 +168,8 @@ public:
         impacts_fresh_ = false;
         return bodies_;
     }
-    /// The contacts found by the last detect().
+    /// The contacts found by the last detect(); under event timing, after the impacts the
+    /// step answered at their moment.
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
 
     /// The shortcuts in use.
@@ -209,6 +212,11 @@ private:
     [[nodiscard]] bool uses_grid() const;
     /// The guard for a stage that changed only the bodies `changed`.
     void guard_bodies(const char* stage, std::span<const std::uint32_t> changed) const;
+    /// The contacts respond() and correct() answer: contacts_ without the impacts detect() put
+    /// first under event timing (answered at their moment already).
+    [[nodiscard]] std::span<const Contact> unanswered_contacts() const {
+        return std::span<const Contact>(contacts_).subspan(answered_first_);
+    }
     /// Stages 3 and 4; each returns 0 when the bodies it changed are finite, NaN otherwise.
     double respond_contacts();
     double correct_contacts();
@@ -230,6 +238,12 @@ private:
     ImpactsAnswered impacts_;
     /// True from an integrate_impact_to_impact() that followed impacts to the detect() after it.
     bool impacts_fresh_ = false;
+    /// True from a detect() that put the last integrate_impact_to_impact()'s contacts first in
+    /// contacts_ to the keep_answered_impacts() after it, which then has nothing to move.
+    bool impacts_placed_ = false;
+    /// How many contacts at the front of contacts_ are impacts answered already (that detect()
+    /// put there), for respond() and correct() to pass over; 0 otherwise.
+    std::size_t answered_first_ = 0;
     Shortcuts shortcuts_;
     bool used_broad_phase_ = false;
     WorldSettings settings_;
