@@ -477,8 +477,13 @@ std::vector<StageUse> World::plan() const {
             std::snprintf(distance, sizeof distance, "%g", solver.speculative_distance);
             speculative = std::string("; speculative contacts for spheres and planes apart by less than ") + distance + " m";
         }
+        const std::string sweeps =
+            solver.substeps > 0 || solver.shock_sweeps == 0
+                ? std::string()
+                : ", " + std::to_string(solver.shock_sweeps) + (solver.shock_sweeps == 1 ? " shock sweep" : " shock sweeps") +
+                  " after the velocity passes";
         stages.push_back({"solve contacts", true,
-                          "responder '" + std::string(model_.name) + "': all contacts together, " + passes +
+                          "responder '" + std::string(model_.name) + "': all contacts together, " + passes + sweeps +
                               (solver.warm_start ? ", warm started" : ", not warm started") + sleeping + speculative});
         return stages;
     }

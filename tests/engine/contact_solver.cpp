@@ -114,8 +114,9 @@ TEST_CASE("A resting column falls asleep: exactly at rest, its contacts no longe
     CHECK(world.contact_solver().impulses().empty());
     CHECK(world.contacts().size() == 5);  // still detected, to wake the column when touched
     // A velocity given to a sleeping ball from outside (a tool, a test) wakes it, and, pressed
-    // into the ball below, the whole column; lifted clear of it, the others sleep on.
-    world.bodies()[4].velocity = {0, 0.6, 0};
+    // into the ball below, the whole column; lifted clear of it, the others sleep on. Clear
+    // means beyond the speculative distance (2 cm): 1.8 m/s lifts it 3 cm in the step.
+    world.bodies()[4].velocity = {0, 1.8, 0};
     world.step();
     CHECK(!world.sleeping().asleep(4));
     CHECK(world.sleeping().sleeping() == 4);
@@ -259,7 +260,9 @@ TEST_CASE("Substeps: a ball that wakes when another runs into it starts its subs
     for (RigidBody& body : bodies) body.restitution = 0.0;
     WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
     settings.position_correction = {0.2, 0.001};
-    settings.contact_solver = {.substeps = 4};
+    // Without speculative contacts, so that ball 0 wakes in the step that pushes it, not a
+    // step earlier when ball 1 comes within the distance.
+    settings.contact_solver = {.substeps = 4, .speculative_distance = 0.0};
     World world(std::move(bodies), settings, model);
     double resting_height = 0.0;
     bool woke = false;
@@ -407,7 +410,7 @@ TEST_CASE("Speculative contacts: a ball pushed into a neighbour it does not touc
     // speculative distance of 1 cm it is one: B-C may close its gap (0.12 m/s) and no more, so
     // the inelastic solve gives A and B 0.84 m/s and C 0.72 m/s, and the step ends with every
     // pair touching to rounding. Kinetic energy falls from 2.88 J to 0.965 J.
-    World without = row_of_three({.sleeping = false});
+    World without = row_of_three({.sleeping = false, .speculative_distance = 0.0});
     without.step();
     CHECK(deepest_overlap(without) > 0.017);
 
@@ -456,7 +459,7 @@ TEST_CASE("Speculative contacts in substeps: the ball pushed into a neighbour st
     // over some steps, but B-C closes its gap and hardly more. The substeps make a fixed number
     // of passes, not passes to a tolerance: the three here leave B 0.09 mm in C (without
     // speculative contacts 1.8 cm), under a millimetre, half the slop of the chapter's pile.
-    World without = row_of_three({.substeps = 4, .sleeping = false});
+    World without = row_of_three({.substeps = 4, .sleeping = false, .speculative_distance = 0.0});
     without.step();
     CHECK(deepest_overlap(without) > 0.01);
     shallowest_seen = 0.0;
