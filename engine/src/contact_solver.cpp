@@ -302,6 +302,10 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             const Contact& contact = list[c];
             RigidBody& body1 = bodies[contact.body1];
             RigidBody& body2 = bodies[contact.body2];
+            // Where friction acts the passes have solved the normal and friction impulses
+            // together, the friction within the cone of the normal; a sweep along the normal
+            // alone would change the normal impulse under friction that no longer matches it.
+            if (hooks.solve_friction != nullptr && body1.static_friction * body2.static_friction > 0.0) continue;
             // The normal points from body 2 to body 1: a positive lean puts body 1 above.
             const double lean = up_length > 0.0 ? dot(contact.normal, up) / up_length : 0.0;
             RigidBody* lower = nullptr;

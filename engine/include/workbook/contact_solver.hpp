@@ -100,8 +100,9 @@ struct ContactSolverSettings {
     /// pass, take about the square of the row's length in passes to settle. A contact whose
     /// one-sided solve would give the upper body kinetic energy (its lower neighbour moving
     /// into it faster than it comes down) is solved two-sided instead: a sweep never adds
-    /// kinetic energy. The sweeps go along the normals alone (friction keeps what the passes
-    /// gave it), and a contact between bodies side by side stays two-sided. Without gravity
+    /// kinetic energy. The sweeps go along the normals alone, so they leave out the contacts
+    /// where friction acts (the passes solved those with their friction), and a contact
+    /// between bodies side by side stays two-sided. Without gravity
     /// there is no up, and a sweep is one more pass. Measured on the pile of discs
     /// (docs/performance.md): alone it settles a packed block of discs that the passes leave
     /// moving, but not the pile dropped into its box, whose landing puts discs deep into
