@@ -93,6 +93,7 @@ PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs
     settings.contact_solver.relax_passes = knobs.relax_passes;
     settings.contact_solver.shock_sweeps = knobs.shock_sweeps;
     settings.contact_solver.shock_slope = knobs.shock_slope;
+    settings.contact_solver.speculative_distance = knobs.speculative_distance;
     World world(std::move(bodies), settings, *model);
     world.set_shortcuts({.response_energy_probe = false});
     const double seconds = timed_steps(steps, budget, [&world] { world.step(); });

@@ -79,6 +79,7 @@ struct PileKnobs {
     int relax_passes = ContactSolverSettings{}.relax_passes;  ///< ContactSolverSettings::relax_passes
     int shock_sweeps = ContactSolverSettings{}.shock_sweeps;     ///< ContactSolverSettings::shock_sweeps
     double shock_slope = ContactSolverSettings{}.shock_slope;    ///< ContactSolverSettings::shock_slope
+    double speculative_distance = ContactSolverSettings{}.speculative_distance;  ///< m (0: off)
 };
 
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).

@@ -1,6 +1,6 @@
 // workbook-pile [ENGINE] N [seconds] [velocity iterations] [position iterations] [warm start 0/1] [fraction] [slop]
 //               [swept 0/1] [tolerance] [substeps] [contact hertz]
-//               [sleeping 0/1] [relax passes] [shock sweeps] [shock slope] [--budget SECONDS]
+//               [sleeping 0/1] [relax passes] [shock sweeps] [shock slope] [speculative distance] [--budget SECONDS]
 // runs the pile of pile.hpp in one engine (workbook, the default, chipmunk, box2d or bullet; the
 // knobs after `seconds` are the workbook's) and prints one CSV line:
 //   engine,N,ms_per_step,deepest_m,kinetic_J,mean_height_m,outside
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         std::fprintf(stderr, "usage: workbook-pile [workbook|chipmunk|box2d|bullet] N [seconds] [velocity_iterations] "
-                             "[position_iterations] [warm_start] [fraction] [slop] [swept] [tolerance] [substeps] [hertz] [sleeping] [relax passes] [shock sweeps] [shock slope] [--budget SECONDS]\n");
+                             "[position_iterations] [warm_start] [fraction] [slop] [swept] [tolerance] [substeps] [hertz] [sleeping] [relax passes] [shock sweeps] [shock slope] [speculative distance] [--budget SECONDS]\n");
         return 2;
     }
     if (engine != "workbook" && peer(engine) == nullptr) {
@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
         if (args.size() > 12) knobs.relax_passes = std::stoi(args[12]);
         if (args.size() > 13) knobs.shock_sweeps = std::stoi(args[13]);
         if (args.size() > 14) knobs.shock_slope = std::stod(args[14]);
+        if (args.size() > 15) knobs.speculative_distance = std::stod(args[15]);
         const Pile pile = make_pile(count);
         const int steps = static_cast<int>(seconds / Pile::time_step + 0.5);
         const PileResult r = engine == "workbook" ? run_pile_workbook(pile, steps, knobs, budget) : peer(engine)(pile, steps, budget);

@@ -39,7 +39,10 @@ PASSES_COLUMNS = ["who", "warm_start", "passes", "overlap_mm", "sunk_mm"]
 
 def passes_variant(spec, passes, warm_start, seconds):
     """The scene description run for one point of a passes figure."""
-    solver = dict(spec.get("contact_solver", {}), velocity_iterations=passes, warm_start=warm_start)
+    # The passes alone: a shock sweep, or speculative contacts, would hold the column up at
+    # any number of passes and hide what the figure measures.
+    solver = dict(spec.get("contact_solver", {}), velocity_iterations=passes, warm_start=warm_start, shock_sweeps=0,
+                  speculative_distance=0.0)
     return dict(spec, duration=seconds, contact_solver=solver)
 
 

@@ -108,6 +108,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     const double largest = set.largest_radius;
     const std::size_t bounded = set.bounded;
     largest_radius_ = largest;
+    margin_ = set.margin;
 
     // The swept test pairs bodies whose ends are within r_1 + t_1 + r_2 + t_2 of each other (t
     // the travel). Cells sized for the fastest sphere would grow with N (the fastest of a
@@ -129,7 +130,8 @@ bool BroadPhase::build_grid(const ProxySet& set) {
         // Travels are lengths of differences of coordinates: a few ulps of them, with room to spare.
         slack_ = tolerances::travel_slack * (scale + largest + wide_travel);
     }
-    const double reach = 2.0 * small_reach;
+    // Two bodies pair within their radii and the margin (0 unless speculative contacts).
+    const double reach = 2.0 * small_reach + set.margin;
     small_reach_ = small_reach;
 
     // Cells at least one largest reach wide (with room for rounding), so that two bodies that
@@ -230,6 +232,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
 
 void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     const double slack = slack_;
+    const double margin = margin_;
     // The pair's tests: bounding spheres overlap (for the narrow phase), and, for the swept
     // test, paths may meet (a sphere's path lies within its travel of its end). The travel is 0
     // for every body the swept test leaves alone, so the wider reach holds both, and most
@@ -237,7 +240,7 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     auto pair = [&](const GridProxy& p, const GridProxy& q) {
         const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
         const double d2 = dx * dx + dy * dy + dz * dz;
-        const double radii = p.radius + q.radius;
+        const double radii = p.radius + q.radius + margin;
         const double reach = (radii + p.travel + q.travel) * (1.0 + tolerances::may_touch_slack) + slack;
         if (d2 > reach * reach) return;
         // Conservative by a relative slack, so rounding here never drops a pair the narrow
@@ -326,7 +329,7 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     for (const std::uint32_t s : large_) {
         const GridProxy& p = proxies[s];
         const bool p_wide = is_wide(p);
-        const double far = ((p.radius + p.travel + largest_reach_) * (1.0 + tolerances::may_touch_slack) + slack) * inverse_cell_ *
+        const double far = ((p.radius + p.travel + largest_reach_ + margin) * (1.0 + tolerances::may_touch_slack) + slack) * inverse_cell_ *
                            (1.0 + tolerances::conservative_slack);
         const std::uint64_t k = far < 1e15 ? static_cast<std::uint64_t>(far) + 1 : std::uint64_t{1} << 50;
         const std::uint64_t cx = axis_cell_of(p.x, 0), cy = axis_cell_of(p.y, 1), cz = axis_cell_of(p.z, 2);
@@ -373,7 +376,8 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
         const Vector3 offset{p.x - u.point.x, p.y - u.point.y, p.z - u.point.z};
         const double height = dot(offset, u.normal);
         // A relative slack keeps the test conservative.
-        if ((immovable_pairs || p.movable || u.movable) && height < p.radius + tolerances::conservative_slack * (p.radius + std::abs(height))) {
+        const double radius = p.radius + margin_;
+        if ((immovable_pairs || p.movable || u.movable) && height < radius + tolerances::conservative_slack * (radius + std::abs(height))) {
             const std::uint64_t a = std::min(p.index, u.index), b = std::max(p.index, u.index);
             contact_keys_.push_back(a << 32 | b);
         }
@@ -390,7 +394,7 @@ void BroadPhase::collect_plane_pairs(const ProxySet& set, bool immovable_pairs) 
         // point is above every radius (with a cell to spare for rounding) holds no pair.
         const Vector3 n = u.normal;
         const double half_spread = 0.5 * cell * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
-        const double reach = largest_radius_ + half_spread + cell;
+        const double reach = largest_radius_ + margin_ + half_spread + cell;
         for (std::uint64_t z = 0; z < nz; ++z) {
             for (std::uint64_t y = 0; y < ny; ++y) {
                 const std::uint64_t row = (z * ny + y) * nx;

@@ -62,6 +62,17 @@ Softness soft_contact(double hertz, double damping_ratio, double h) {
     return {omega / a1, a2 * a3, a3};
 }
 
+/// The contacts as the chapter's functions may see them: a speculative point (negative depth,
+/// the pair still apart by that much) with depth 0, so that its bias is 0 and every depth is
+/// in the functions' legal domain. The solver sets such a point's target itself.
+std::span<const Contact> clamp_depths(std::span<const Contact> contacts, std::vector<Contact>& seen) {
+    seen.assign(contacts.begin(), contacts.end());
+    for (Contact& contact : seen)
+        for (std::size_t i = 0; i < contact.point_count; ++i)
+            contact.points[i].penetration = std::max(contact.points[i].penetration, 0.0);
+    return seen;
+}
+
 }  // namespace
 
 std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
@@ -137,6 +148,7 @@ void ContactSolver::reserve(std::size_t contacts) {
     if (impulses_.capacity() >= contacts) return;
     impulses_.reserve(contacts);
     adjusted_.reserve(contacts);
+    seen_.reserve(contacts);
     order_.reserve(contacts);
     height_.reserve(contacts);
     previous_.reserve(contacts);
@@ -152,8 +164,12 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     ContactSolverReport report;
     impulses_.assign(contacts.size(), ContactImpulses{});
     recall(contacts, settings, report);
+    // With speculative contacts the chapter's functions get the contacts with every depth at
+    // least 0 (`seen`); the gaps are read from `contacts`.
+    const bool speculative = settings.speculative_distance > 0.0;
+    const std::span<const Contact> seen = speculative ? clamp_depths(contacts, seen_) : contacts;
     if (settings.substeps > 0) {
-        solve_in_substeps(bodies, contacts, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
+        solve_in_substeps(bodies, contacts, seen, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
         remember(contacts);
         return report;
     }
@@ -186,13 +202,36 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
 
     // 1. What each point aims for, computed once from the velocities before any impulse.
     for (std::size_t c = 0; c < contacts.size(); ++c) {
-        const Contact& contact = contacts[c];
+        const Contact& contact = seen[c];
         hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
+    }
+    // A speculative point, apart by s at detection: this solve moves the bodies by its change
+    // of their velocities times dt (below), so the pair ends the step apart by
+    // s + (u - u0) dt, u0 its normal velocity before the solve and u after. The target
+    // max(u0, 0) - s / dt keeps that at least 0 (at least -u0 dt, what the pair approached
+    // by in the move, when it approached): the gap may close, never turn into overlap. It asks
+    // for nothing until the solve pushes the pair together faster than that, so a pair that
+    // never meets is left as it is; and no bounce: the pair has not touched yet.
+    if (speculative) {
+        for (std::size_t c = 0; c < contacts.size(); ++c) {
+            const Contact& contact = contacts[c];
+            const RigidBody& body1 = bodies[contact.body1];
+            const RigidBody& body2 = bodies[contact.body2];
+            for (std::size_t i = 0; i < contact.point_count; ++i) {
+                const double gap = -contact.points[i].penetration;
+                if (!(gap > 0.0)) continue;
+                const Vector3& at = contact.points[i].position;
+                const Vector3 v1 = body1.velocity + cross(body1.angular_velocity, at - body1.position);
+                const Vector3 v2 = body2.velocity + cross(body2.angular_velocity, at - body2.position);
+                const double u0 = dot(v1 - v2, contact.normal);
+                impulses_[c].points[i].bounce = std::max(u0, 0.0) - gap / dt;
+            }
+        }
     }
     if (settings.warm_start) {
         const bool with_friction = hooks.solve_friction != nullptr && hooks.tangents != nullptr;
         for (std::size_t c = 0; c < contacts.size(); ++c) {
-            const Contact& contact = contacts[c];
+            const Contact& contact = seen[c];
             if (with_friction)
                 warm_start_with_friction(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], hooks.tangents);
             else
@@ -219,6 +258,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             for (std::size_t i = 0; i < max_contact_points; ++i) {
                 double& bounce = impulses_[c].points[i].bounce;
                 bounces_[c * max_contact_points + i] = bounce;
+                if (speculative && bounce < 0.0) continue;  // a gap's target holds in both phases
                 any_bounce = any_bounce || bounce != 0.0;
                 bounce = 0.0;
             }
@@ -228,7 +268,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             double largest = 0.0;
             for (std::size_t k = 0; k < order_.size(); ++k) {
                 const std::uint32_t c = order_[k];
-                const Contact& contact = contacts[c];
+                const Contact& contact = seen[c];
                 largest = std::max(largest, hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
                 if (with_friction)
                     largest = std::max(largest, hooks.solve_friction(bodies[contact.body1], bodies[contact.body2], contact,
@@ -262,6 +302,10 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             const Contact& contact = list[c];
             RigidBody& body1 = bodies[contact.body1];
             RigidBody& body2 = bodies[contact.body2];
+            // Where friction acts the passes have solved the normal and friction impulses
+            // together, the friction within the cone of the normal; a sweep along the normal
+            // alone would change the normal impulse under friction that no longer matches it.
+            if (hooks.solve_friction != nullptr && body1.static_friction * body2.static_friction > 0.0) continue;
             // The normal points from body 2 to body 1: a positive lean puts body 1 above.
             const double lean = up_length > 0.0 ? dot(contact.normal, up) / up_length : 0.0;
             RigidBody* lower = nullptr;
@@ -310,7 +354,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             }
         }
     };
-    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(contacts);
+    for (int sweep = 0; sweep < settings.shock_sweeps; ++sweep) shock_sweep(seen);
 
     // The move of this step used the velocities before the solve; the solve's change of them
     // belongs to this step too (as when the solve comes before the move, the order of Box2D
@@ -386,9 +430,9 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     return report;
 }
 
-void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> contacts,
-                                      const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
-                                      const PositionCorrection& knobs, double dt, const Vector3& gravity,
+void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected,
+                                      std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                                      const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt, const Vector3& gravity,
                                       double gravity_position_factor, std::span<const std::uint8_t> woken,
                                       ContactSolverReport& report) {
     const int n = settings.substeps;
@@ -409,8 +453,10 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             SoftPoint& sp = soft_points_[c * max_contact_points + i];
             sp.mass = impulses_[c].points[i].mass;
-            sp.bounce = impulses_[c].points[i].bounce;
-            sp.depth = contact.points[i].penetration;
+            // The depth as detected: a speculative point's is negative (contacts, the chapter's
+            // view, has it at 0), and aim() lets it approach by its gap; it does not bounce.
+            sp.depth = detected[c].points[i].penetration;
+            sp.bounce = settings.speculative_distance > 0.0 && sp.depth < 0.0 ? 0.0 : impulses_[c].points[i].bounce;
             sp.r1 = contact.points[i].position - body1.position;
             sp.r2 = contact.points[i].position - body2.position;
         }

@@ -105,6 +105,24 @@ bool overlaps(const RigidBody& a, const RigidBody& b) {
     return false;
 }
 
+bool within_margin(const RigidBody& a, const RigidBody& b, double margin) {
+    switch (pair_of(a.shape.kind, b.shape.kind)) {
+        case ShapePair::sphere_sphere:
+            return spheres_overlap(a.position, a.shape.radius + margin, b.position, b.shape.radius);
+        case ShapePair::sphere_plane: {
+            const RigidBody& sphere = a.shape.kind == ShapeKind::sphere ? a : b;
+            const RigidBody& plane = a.shape.kind == ShapeKind::sphere ? b : a;
+            return sphere_plane_overlap(sphere.position, sphere.shape.radius + margin, plane.position,
+                                        rotate(plane.orientation, plane.shape.normal));
+        }
+        case ShapePair::sphere_box:
+        case ShapePair::plane_box:
+        case ShapePair::box_box:
+        case ShapePair::plane_plane: return false;
+    }
+    return false;
+}
+
 bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact) {
     switch (pair_of(a.shape.kind, b.shape.kind)) {
         case ShapePair::sphere_box:

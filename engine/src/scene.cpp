@@ -383,7 +383,8 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
         knobs.fail(knobs.field("friction"),
                    "is no longer a knob of the contact solver: give each body its own \"friction\" (the ground "
                    "too; a pair takes the geometric mean) and use the responder \"friction\"");
-    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "tolerance", "bounce_threshold", "sleeping"});
+    knobs.only_keys({"velocity_iterations", "position_iterations", "warm_start", "tolerance", "bounce_threshold", "sleeping",
+                     "shock_sweeps", "speculative_distance"});
     ContactSolverSettings result;
     auto passes = [&](const char* key, int fallback) {
         const double v = knobs.number_or(key, fallback);
@@ -393,6 +394,12 @@ ContactSolverSettings read_contact_solver(const Reader& root) {
     };
     result.velocity_iterations = passes("velocity_iterations", result.velocity_iterations);
     result.position_iterations = passes("position_iterations", result.position_iterations);
+    result.shock_sweeps = passes("shock_sweeps", result.shock_sweeps);
+    // A margin is a length like a radius: the same limit keeps every pair's sums finite.
+    result.speculative_distance = knobs.number_or("speculative_distance", result.speculative_distance);
+    if (!(result.speculative_distance >= 0.0 && result.speculative_distance <= scene_limits.max_radius))
+        knobs.fail(knobs.field("speculative_distance"),
+                   "must lie in [0, " + Reader::format(scene_limits.max_radius) + "] m, got " + Reader::format(result.speculative_distance));
     result.warm_start = knobs.boolean_or("warm_start", result.warm_start);
     result.sleeping = knobs.boolean_or("sleeping", result.sleeping);
     result.tolerance = knobs.number_or("tolerance", result.tolerance);

@@ -39,6 +39,7 @@ World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseMode
         for (std::uint32_t i = 0; i < count; ++i) gather_body(i, swept, dt, gravity_term, smallest_radius);
         proxies_.swept = swept;
         proxies_.fast_travel = smallest_radius;
+        proxies_.margin = contact_margin();
         // Not for bodies at non-finite positions: every pair would be listed.
         if (proxies_.poison == 0.0) broad_phase_.find_pairs(proxies_, pairs_, !shortcuts_.skip_immovable_pairs);
     }
@@ -220,7 +221,7 @@ void World::detect() {
         const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
         SweepGrid grid;
         if (used_broad_phase_ && broad_phase_.has_grid() && proxies_.swept) grid = {&proxies_, &broad_phase_};
-        sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_);
+        sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_, contact_margin());
     }
     // Only the spheres the swept test moved back changed here; the guard looks at those (and,
     // on a find, at all, to name the first in body order).
@@ -238,6 +239,7 @@ void World::find_contacts(bool gathered) {
     used_broad_phase_ = uses_grid();
     if (used_broad_phase_) {
         if (!gathered) gather_proxies();
+        proxies_.margin = contact_margin();
         broad_phase_.find_pairs(proxies_, pairs_, !shortcuts_.skip_immovable_pairs);
         for (const auto [i, j] : pairs_) add_contact_from_proxies(i, j);
         return;
@@ -251,10 +253,17 @@ void World::find_contacts(bool gathered) {
     }
 }
 
+double World::contact_margin() const {
+    return model_.contact_solver != nullptr && settings_.contact_timing == ContactTiming::discrete
+               ? settings_.contact_solver.speculative_distance
+               : 0.0;
+}
+
 void World::add_contact_if_any(std::uint32_t i, std::uint32_t j) {
     const RigidBody& a = bodies_[i];
     const RigidBody& b = bodies_[j];
-    if (!overlaps(a, b)) return;
+    const double margin = contact_margin();
+    if (!overlaps(a, b) && !(margin > 0.0 && within_margin(a, b, margin))) return;
     // Two immovable bodies never get a contact: nothing could answer it.
     if (a.is_immovable() && b.is_immovable()) return;
     // The slot is reserved first so the contact is written in place; a box pair that the full
@@ -266,11 +275,13 @@ void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
     // Spheres and planes are tested and written from the proxies, which hold the same numbers
     // as the bodies in 72 contiguous bytes: the pairs' bodies are not read at all (at
     // N = 100,000 each read of a body missed every cache). Boxes take the bodies' path.
+    // Within the margin of speculative contacts (0 without them: the overlap test).
     const GridProxy& a = proxies_.proxies[i];
     const GridProxy& b = proxies_.proxies[j];
+    const double margin = proxies_.margin;
     if (a.sphere && b.sphere) {
         const Vector3 centre1{a.x, a.y, a.z}, centre2{b.x, b.y, b.z};
-        if (!spheres_overlap(centre1, a.radius, centre2, b.radius)) return;
+        if (!spheres_overlap(centre1, a.radius + margin, centre2, b.radius)) return;
         // Two immovable bodies never get a contact: nothing could answer it.
         if (!a.movable && !b.movable) return;
         Contact& contact = contacts_.emplace_back();
@@ -283,7 +294,7 @@ void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
         const GridProxy& sphere = a.sphere ? a : b;
         const PlaneProxy& plane = *std::lower_bound(proxies_.planes.begin(), proxies_.planes.end(), a.plane ? i : j, plane_before);
         const Vector3 centre{sphere.x, sphere.y, sphere.z};
-        if (!sphere_plane_overlap(centre, sphere.radius, plane.point, plane.normal)) return;
+        if (!sphere_plane_overlap(centre, sphere.radius + margin, plane.point, plane.normal)) return;
         if (!sphere.movable && !plane.movable) return;
         Contact& contact = contacts_.emplace_back();
         write_sphere_plane(centre, sphere.radius, plane.point, plane.normal, contact);
@@ -460,9 +471,20 @@ std::vector<StageUse> World::plan() const {
                                       (solver.relax_passes == 1 ? " relax pass each)" : " relax passes each)")
                                 : "up to " + std::to_string(solver.velocity_iterations) + " velocity and " +
                                       std::to_string(solver.position_iterations) + " position passes";
+        std::string speculative;
+        if (solver.speculative_distance > 0.0) {
+            char distance[32];
+            std::snprintf(distance, sizeof distance, "%g", solver.speculative_distance);
+            speculative = std::string("; speculative contacts for spheres and planes apart by less than ") + distance + " m";
+        }
+        const std::string sweeps =
+            solver.substeps > 0 || solver.shock_sweeps == 0
+                ? std::string()
+                : ", " + std::to_string(solver.shock_sweeps) + (solver.shock_sweeps == 1 ? " shock sweep" : " shock sweeps") +
+                  " after the velocity passes";
         stages.push_back({"solve contacts", true,
-                          "responder '" + std::string(model_.name) + "': all contacts together, " + passes +
-                              (solver.warm_start ? ", warm started" : ", not warm started") + sleeping});
+                          "responder '" + std::string(model_.name) + "': all contacts together, " + passes + sweeps +
+                              (solver.warm_start ? ", warm started" : ", not warm started") + sleeping + speculative});
         return stages;
     }
     stages.push_back({"respond", model_.respond != nullptr,

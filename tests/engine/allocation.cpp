@@ -312,6 +312,27 @@ TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
 }
 
+TEST_CASE("the contact solver with speculative contacts allocates nothing once warm",
+          "[world][allocation][contact-solver][speculative]") {
+    // The scene above, with speculative contacts, solved in one solve and in substeps: the
+    // ball's gap to the column becomes a contact, then its impact, within the counted steps.
+    for (const int substeps : {0, 4}) {
+        std::vector<RigidBody> bodies;
+        for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+        bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
+        bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+        WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+        settings.position_correction = {0.2, 0.001};
+        settings.contact_solver.substeps = substeps;
+        settings.contact_solver.speculative_distance = 0.02;
+        World world(std::move(bodies), settings, testing::solver_model);
+        world.step();
+        const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
+        CHECK(allocated == 0);
+        CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
+    }
+}
+
 TEST_CASE("once warm, event timing allocates nothing, in a gas and in a bouncing pile", "[world][allocation][event]") {
     // The event loop's lists (candidates, pending events, the impacts' contacts) grow while the
     // scene warms up and keep their capacity; after that a step finds room in them.

@@ -80,6 +80,9 @@ struct ProxySet {
     /// rather than one. Fewer pairs to test where a few large spheres set the cell width (event
     /// timing's widened spheres in a pile), more cells to visit where they are sparse.
     bool fine_cells = false;
+    /// Also pair bodies whose bounding spheres are apart by less than this, m (speculative
+    /// contacts, ContactSolverSettings::speculative_distance; 0 for none). Set after gathering.
+    double margin = 0.0;
     // Gathered by add() on the way, so that the grid needs no pass of its own to find them:
     Vector3 low{};                    ///< smallest coordinates of a bounded body's centre, m
     Vector3 high{};                   ///< largest, m
@@ -96,6 +99,7 @@ struct ProxySet {
         planes.clear();
         swept = false;
         fine_cells = false;
+        margin = 0.0;
         constexpr double inf = std::numeric_limits<double>::infinity();
         low = {inf, inf, inf};
         high = {-inf, -inf, -inf};
@@ -168,7 +172,7 @@ class BroadPhase {
 public:
     /// Finds, for the gathered `set`, every pair whose bounding spheres overlap (a conservative
     /// test: the narrow phase decides), plus every body-plane pair whose sphere reaches the
-    /// plane, leaving out pairs of two immovable bodies unless `immovable_pairs`; sorted. With
+    /// plane (both within `set.margin`), leaving out pairs of two immovable bodies unless `immovable_pairs`; sorted. With
     /// `set.swept`, also the swept test's candidates (see sweep_partners()). Allocates only
     /// when the scene grew. With `sorted` false the pairs come in no particular order (event
     /// timing sorts only the few it keeps: the sort is a third of the grid's time in a pile).
@@ -237,6 +241,7 @@ private:
     std::uint64_t cells_[3] = {1, 1, 1};
     double slack_ = 0.0;               ///< absolute room for rounding in the swept reach, m
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
+    double margin_ = 0.0;              ///< the set's margin (ProxySet::margin), m
     double largest_reach_ = 0.0;       ///< largest radius + travel in the grid, m
     double small_reach_ = 0.0;         ///< radius + travel above which a proxy is large, m
     double wide_travel_ = 0.0;         ///< travel above which a proxy is wide, m

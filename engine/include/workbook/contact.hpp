@@ -16,7 +16,9 @@ inline constexpr std::size_t max_contact_points = 4;
 /// One point where two bodies touch.
 struct ContactPoint {
     Vector3 position{};        ///< world position of the contact, m
-    double penetration = 0.0;  ///< overlap measured along the contact normal at this point, m (>= 0)
+    /// overlap measured along the contact normal at this point, m (>= 0; negative only for a
+    /// speculative contact, ContactSolverSettings::speculative_distance: the pair is apart by that much)
+    double penetration = 0.0;
 };
 
 /// Everything a responder needs about one overlapping pair.
@@ -30,7 +32,7 @@ struct Contact {
     Vector3 normal{1.0, 0.0, 0.0};  ///< unit vector from body 2 towards body 1
     std::array<ContactPoint, max_contact_points> points{};  ///< the first `point_count` entries are valid
     std::uint8_t point_count = 0;  ///< number of valid entries in `points`
-    double penetration = 0.0;  ///< overlap along the normal, m: at least every point's depth (for a box pair, the overlap of the two shadows on the normal)
+    double penetration = 0.0;  ///< overlap along the normal, m: at least every point's depth and at least 0 (for a box pair, the overlap of the two shadows on the normal)
 
     /// Appends a point and keeps `penetration` the deepest one; ignores points past the capacity.
     constexpr void add_point(const Vector3& position, double depth) {

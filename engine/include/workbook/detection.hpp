@@ -42,6 +42,12 @@ bool sphere_plane_overlap(const Vector3& centre, double radius, const Vector3& p
 /// See sphere_plane_overlap(); the sphere is body 1.
 void write_sphere_plane(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal, Contact& contact);
 
+/// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres, or
+/// a sphere and a plane, are apart by less than `margin` (or overlap); write_contact() then
+/// writes their contact, with a negative depth (the gap) when they are apart. False for a
+/// pair with a box, which gets no speculative points.
+bool within_margin(const RigidBody& a, const RigidBody& b, double margin);
+
 /// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
 /// Contact; same result as collide(). Returns false when the pair does not touch after all:
 /// for a pair with a box, overlaps() only compares bounding spheres and the full

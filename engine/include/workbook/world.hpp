@@ -130,7 +130,8 @@ public:
     /// Stage 1: gravity, then positions and orientations. With the grid it also gathers the
     /// broad phase's proxies in the same pass, for the detect() that follows.
     void integrate();
-    /// Stage 2: fills contacts() with every overlapping pair, then (discrete timing, swept
+    /// Stage 2: fills contacts() with every overlapping pair (and, with speculative contacts,
+    /// every sphere and plane pair within ContactSolverSettings::speculative_distance), then (discrete timing, swept
     /// spheres on) traces each fast sphere along its path (swept_spheres.hpp). Right after
     /// integrate_impact_to_impact(), only the pairs whose bodies came near each other are tried.
     void detect();
@@ -204,6 +205,9 @@ private:
     /// Stage 1; with `gather`, fills proxies_ in the same pass (and the swept test's starts
     /// when `swept`). Returns 0 when every body is finite afterwards, NaN otherwise.
     double integrate_bodies(bool gather, bool swept);
+    /// How far apart a pair may be and still get a contact, m: the speculative distance of
+    /// the contact solver (ContactSolverSettings::speculative_distance), 0 without one.
+    [[nodiscard]] double contact_margin() const;
     /// True when detect() uses the grid for this world's size and shortcuts.
     [[nodiscard]] bool uses_grid() const;
     /// The guard for a stage that changed only the bodies `changed`.
