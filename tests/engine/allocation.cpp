@@ -123,6 +123,21 @@ std::size_t allocations_over(World& world, int steps, Watch&& watch) {
     return AllocationCounter::count();
 }
 
+/// A column of five balls on the ground and a sixth falling onto it from 2 m, solved by the
+/// engine tests' stand-ins for chapter 5's functions with `solver`, after one step.
+World column_and_falling_ball(const ContactSolverSettings& solver) {
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
+    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver = solver;
+    World world(std::move(bodies), settings, testing::solver_model);
+    world.step();
+    return world;
+}
+
 }  // namespace
 
 // The replaceable global allocation functions ([new.delete]). The array and nothrow forms
@@ -260,14 +275,7 @@ TEST_CASE("the contact solver with sleeping allocates nothing once warm, through
           "[world][allocation][contact-solver][sleeping]") {
     // A column of 5 balls, and a sixth dropped from 2 m onto it: the column falls asleep, the
     // ball wakes it, and all six fall asleep again, all within the counted steps.
-    std::vector<RigidBody> bodies;
-    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
-    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
-    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
-    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
-    settings.position_correction = {0.2, 0.001};
-    World world(std::move(bodies), settings, testing::solver_model);
-    world.step();
+    World world = column_and_falling_ball({});
     std::size_t most_asleep = 0, fewest_asleep_after = 6;
     const std::size_t allocated = allocations_over(world, 300, [&](const World& w) {
         most_asleep = std::max(most_asleep, w.sleeping().sleeping());
@@ -281,15 +289,7 @@ TEST_CASE("the contact solver with sleeping allocates nothing once warm, through
 TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world][allocation][contact-solver][substeps]") {
     // The scene above, solved in substeps of soft contacts: the ball's impact adds a contact
     // within the counted steps.
-    std::vector<RigidBody> bodies;
-    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
-    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
-    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
-    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
-    settings.position_correction = {0.2, 0.001};
-    settings.contact_solver.substeps = 4;
-    World world(std::move(bodies), settings, testing::solver_model);
-    world.step();
+    World world = column_and_falling_ball({.substeps = 4});
     const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
     CHECK(allocated == 0);
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
@@ -297,16 +297,7 @@ TEST_CASE("the contact solver in substeps allocates nothing once warm", "[world]
 
 TEST_CASE("the contact solver with shock sweeps allocates nothing once warm", "[world][allocation][contact-solver][shock]") {
     // The scene above, solved in one solve a step with two sweeps after the velocity passes.
-    std::vector<RigidBody> bodies;
-    for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
-    bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
-    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
-    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
-    settings.position_correction = {0.2, 0.001};
-    settings.contact_solver.shock_sweeps = 2;
-    settings.contact_solver.sleeping = false;
-    World world(std::move(bodies), settings, testing::solver_model);
-    world.step();
+    World world = column_and_falling_ball({.shock_sweeps = 2, .sleeping = false});
     const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
     CHECK(allocated == 0);
     CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column
@@ -317,16 +308,7 @@ TEST_CASE("the contact solver with speculative contacts allocates nothing once w
     // The scene above, with speculative contacts, solved in one solve and in substeps: the
     // ball's gap to the column becomes a contact, then its impact, within the counted steps.
     for (const int substeps : {0, 4}) {
-        std::vector<RigidBody> bodies;
-        for (int i = 0; i < 5; ++i) bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05 + 0.0995 * i, 0}));
-        bodies.push_back(make_sphere(1.0, 0.05, {0, 2.0, 0}));
-        bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
-        WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
-        settings.position_correction = {0.2, 0.001};
-        settings.contact_solver.substeps = substeps;
-        settings.contact_solver.speculative_distance = 0.02;
-        World world(std::move(bodies), settings, testing::solver_model);
-        world.step();
+        World world = column_and_falling_ball({.substeps = substeps, .speculative_distance = 0.02});
         const std::size_t allocated = allocations_over(world, 300, [](const World&) {});
         CHECK(allocated == 0);
         CHECK(world.bodies()[5].position.y < 0.6);  // the ball came down onto the column

@@ -210,10 +210,10 @@ namespace {
 
 /// A block of frictionless discs (spheres of 1 kg and radius 0.05 m in z = 0), `rows` rows of
 /// `columns` and `columns` - 1 in turn, packed as tightly as discs pack (each in the hollow of
-/// the two below, each touching its neighbours), in a box exactly `columns` discs wide;
-/// solved in 12 substeps of soft contacts at 180 Hz without sleeping. The discs start exactly
-/// touching, so the world finds no contact between them until they overlap.
-World block_of_discs(int columns, int rows, int relax_passes) {
+/// the two below, each touching its neighbours), in a box exactly `columns` discs wide, so that
+/// the rows of `columns` are jammed wall to wall; solved with `solver`, without sleeping. The
+/// discs start exactly touching, so the world finds no contact between them until they overlap.
+World packed_discs(int columns, int rows, ContactSolverSettings solver) {
     const double r = 0.05, width = 2 * r * columns;
     std::vector<RigidBody> bodies;
     for (int j = 0; j < rows; ++j)
@@ -228,8 +228,14 @@ World block_of_discs(int columns, int rows, int relax_passes) {
     }
     WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
     settings.position_correction = {0.5, 0.002};
-    settings.contact_solver = {.substeps = 12, .relax_passes = relax_passes, .contact_hertz = 180.0, .sleeping = false};
+    solver.sleeping = false;
+    settings.contact_solver = solver;
     return World(std::move(bodies), settings, model);
+}
+
+/// The packed block solved in 12 substeps of soft contacts at 180 Hz.
+World block_of_discs(int columns, int rows, int relax_passes) {
+    return packed_discs(columns, rows, {.substeps = 12, .relax_passes = relax_passes, .contact_hertz = 180.0});
 }
 
 }  // namespace
@@ -297,26 +303,10 @@ World two_balls_one_sweep(double lower, double upper) {
     return World(std::move(bodies), settings, model);
 }
 
-/// A block of frictionless balls in z = 0 as block_of_discs() packs them (rows of `columns` and
-/// `columns` - 1 in turn, in a box exactly `columns` wide, the rows of `columns` jammed wall
-/// to wall), solved in one rigid solve a step of at most 15 passes each, without sleeping.
+/// The packed block solved in one rigid solve a step of at most 15 passes each, with `sweeps`
+/// shock sweeps.
 World jammed_block(int columns, int rows, int sweeps) {
-    const double r = 0.05, width = 2 * r * columns;
-    std::vector<RigidBody> bodies;
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < columns - j % 2; ++i) {
-            bodies.push_back(make_sphere(1.0, r, {-width / 2 + r * (1 + 2 * i + j % 2), r + std::sqrt(3.0) * r * j, 0}));
-            bodies.back().restitution = 0.0;
-        }
-    for (const auto& [normal, point] : {std::pair{Vector3{0, 1, 0}, Vector3{0, 0, 0}}, std::pair{Vector3{1, 0, 0}, Vector3{-width / 2, 0, 0}},
-                                        std::pair{Vector3{-1, 0, 0}, Vector3{width / 2, 0, 0}}}) {
-        bodies.push_back(make_immovable_plane(normal, point));
-        bodies.back().restitution = 0.0;
-    }
-    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
-    settings.position_correction = {0.5, 0.002};
-    settings.contact_solver = {.velocity_iterations = 15, .position_iterations = 15, .shock_sweeps = sweeps, .sleeping = false};
-    return World(std::move(bodies), settings, model);
+    return packed_discs(columns, rows, {.velocity_iterations = 15, .position_iterations = 15, .shock_sweeps = sweeps});
 }
 }  // namespace
 
