@@ -413,6 +413,13 @@ TEST_CASE("the contact solver's knobs are checked", "[scene][errors]") {
     CHECK(problem(R"({"sleeping": "no"})").starts_with("contact_solver.sleeping: must be true or false"));
     CHECK(problem(R"({"iterations": 5})").starts_with("contact_solver.iterations: unknown key"));
     CHECK(problem(R"({"velocity_iterations": 7, "warm_start": false})") == "no error");
+    CHECK(problem(R"({"shock_sweeps": 1.5})") == "contact_solver.shock_sweeps: must be a whole number from 0 to 10000, got 1.5");
+    CHECK(problem(R"({"speculative_distance": -0.01})") == "contact_solver.speculative_distance: must lie in [0, 1e+09] m, got -0.01");
+    CHECK(problem(R"({"speculative_distance": 1e10})") == "contact_solver.speculative_distance: must lie in [0, 1e+09] m, got 1e+10");
+    CHECK(problem(R"({"shock_sweeps": 1, "speculative_distance": 0.02})") == "no error");
+    const Scene both = parse_scene(start + R"({"shock_sweeps": 2, "speculative_distance": 0.02}})", "good.json");
+    CHECK(both.settings.contact_solver.shock_sweeps == 2);
+    CHECK(both.settings.contact_solver.speculative_distance == 0.02);
 }
 
 TEST_CASE("friction: static defaults to dynamic, and a responder without friction refuses it", "[scene][errors]") {

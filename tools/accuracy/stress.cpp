@@ -360,6 +360,14 @@ std::vector<RefusedScene> refused_scenes() {
                           return scene_text(step, R"({"shape": {"type": "sphere", "radius": 0.1}, "mass": 1, "position": [1e999, 0, 0]})");
                       },
                       "bodies[0].position[0]"});
+    scenes.push_back({"speculative-1e10", "speculative contacts 1e10 m apart (every pair of a scene a contact)", [step] {
+                          return scene_text(step + R"("contact_solver": {"speculative_distance": 1e10}, )", one_ball);
+                      },
+                      "contact_solver.speculative_distance"});
+    scenes.push_back({"shock-sweeps-half", "one and a half shock sweeps", [step] {
+                          return scene_text(step + R"("contact_solver": {"shock_sweeps": 1.5}, )", one_ball);
+                      },
+                      "contact_solver.shock_sweeps"});
     return scenes;
 }
 
