@@ -138,10 +138,9 @@ namespace {
 /// (detect_moved_again()).
 class Sweep {
 public:
-    Sweep(std::span<RigidBody> bodies, const SweepGrid& grid, std::vector<Contact>& contacts, SweepScratch& scratch,
-          double margin)
+    Sweep(std::span<RigidBody> bodies, const SweepGrid& grid, std::vector<Contact>& contacts, SweepScratch& scratch)
         : bodies_(bodies), grid_(grid), use_grid_(grid.broad_phase != nullptr), contacts_(contacts), scratch_(scratch),
-          count_(static_cast<std::uint32_t>(bodies.size())), margin_(margin) {}
+          count_(static_cast<std::uint32_t>(bodies.size())) {}
 
     void run(double dt, const Vector3& gravity_term) {
         if (!use_grid_) gather_starts(dt, gravity_term);
@@ -304,26 +303,12 @@ private:
             for (const std::uint32_t j : candidates_again(i)) {
                 if (j == i || (scratch_.is_moved[j] && j > i)) continue;
                 auto contact = i < j ? collide(bodies_[i], i, bodies_[j], j) : collide(bodies_[j], j, bodies_[i], i);
-                // With speculative contacts, as detection found them: also the bodies within the
-                // margin, but the partner apart from it keeps the touching contact instead.
-                if (!contact && margin_ > 0.0 && j != touching.body2) contact = within(i, j);
                 if (!contact) continue;
                 contacts_.push_back(*contact);
                 partner_overlaps = partner_overlaps || j == touching.body2;
             }
             if (!partner_overlaps && !(touching.body2 > i && scratch_.is_moved[touching.body2])) contacts_.push_back(touching);
         }
-    }
-
-    /// The speculative contact of bodies i and j, body 1 the one of smaller index, when they
-    /// are within the margin (within_margin()); nothing otherwise.
-    std::optional<Contact> within(std::uint32_t i, std::uint32_t j) const {
-        const std::uint32_t a = std::min(i, j), b = std::max(i, j);
-        if (!within_margin(bodies_[a], bodies_[b], margin_)) return std::nullopt;
-        if (bodies_[a].is_immovable() && bodies_[b].is_immovable()) return std::nullopt;
-        Contact contact;
-        if (!write_contact(bodies_[a], a, bodies_[b], b, contact)) return std::nullopt;
-        return contact;
     }
 
     /// The boxes, which the swept test's partners leave out.
@@ -362,14 +347,13 @@ private:
     SweepScratch& scratch_;
     std::uint32_t count_;
     double smallest_radius_ = 0.0;  ///< without the grid: the travel from which a sphere is traced
-    double margin_ = 0.0;           ///< speculative contacts' distance (0: none)
 };
 
 }  // namespace
 
 void sweep_fast_spheres(std::span<RigidBody> bodies, double dt, const Vector3& gravity_term, const SweepGrid& grid,
-                        std::vector<Contact>& contacts, SweepScratch& scratch, double margin) {
-    Sweep(bodies, grid, contacts, scratch, margin).run(dt, gravity_term);
+                        std::vector<Contact>& contacts, SweepScratch& scratch) {
+    Sweep(bodies, grid, contacts, scratch).run(dt, gravity_term);
 }
 
 }  // namespace workbook

@@ -221,7 +221,7 @@ void World::detect() {
         const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
         SweepGrid grid;
         if (used_broad_phase_ && broad_phase_.has_grid() && proxies_.swept) grid = {&proxies_, &broad_phase_};
-        sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_, contact_margin());
+        sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_);
     }
     // Only the spheres the swept test moved back changed here; the guard looks at those (and,
     // on a find, at all, to name the first in body order).

@@ -81,10 +81,8 @@ struct SweepGrid {
 /// A sphere moved back keeps its start: later spheres are traced against the part of its path
 /// it did travel. With the grid, only the candidates the broad phase found are tried, with the
 /// same result as trying every body. `dt` and `gravity_term` give each body's start without a
-/// grid (start_of_step()). scratch.moved lists the spheres moved back. With a `margin`
-/// (speculative contacts, ContactSolverSettings::speculative_distance) a moved sphere is
-/// detected again as detection does then: also against the bodies within the margin.
+/// grid (start_of_step()). scratch.moved lists the spheres moved back.
 void sweep_fast_spheres(std::span<RigidBody> bodies, double dt, const Vector3& gravity_term, const SweepGrid& grid,
-                        std::vector<Contact>& contacts, SweepScratch& scratch, double margin = 0.0);
+                        std::vector<Contact>& contacts, SweepScratch& scratch);
 
 }  // namespace workbook
