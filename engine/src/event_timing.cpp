@@ -478,7 +478,7 @@ public:
         s.extra_nodes.clear();
         s.dormant_nodes.clear();
         if (boxes_) {
-            s.half_sides.resize(count_);
+            s.start_radius.resize(count_);
             s.dormant_head.assign(count_, no_extra);
         }
         // Room for one overlapping pair per body from the start, as the broad phase keeps for
@@ -507,8 +507,12 @@ public:
         for (std::uint32_t i = 0; i < count_; ++i) {
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
-            s.reach[i] = {body.position, can_move(i, dt_)};
-            if (boxes_) s.half_sides[i] = box_half_sides(i, dt_);
+            s.reach[i].origin = body.position;
+            s.reach[i].reach = can_move(i, dt_);
+            if (boxes_) {
+                s.reach[i].half_sides = box_half_sides(i, dt_);
+                s.start_radius[i] = s.state[i].bounding_radius + s.reach[i].reach;  // as ProxySet::add() widens it
+            }
             s.proxies.add(body, i, 0.0, {}, s.reach[i].reach);
             if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
         }
@@ -919,7 +923,7 @@ private:
     [[nodiscard]] bool leaves_box(std::uint32_t i, double t) const {
         if (!boxes_) return false;
         const Vector3 needs = needs_reach_along_axes(i, t);
-        const Vector3& half = scratch_.half_sides[i];
+        const Vector3& half = scratch_.reach[i].half_sides;
         const double radius = scratch_.state[i].bounding_radius;
         return needs.x + radius > half.x || needs.y + radius > half.y || needs.z + radius > half.z;
     }
@@ -930,15 +934,15 @@ private:
     }
 
     /// True when the step uses boxes and bodies a and b cannot meet within it because their
-    /// boxes (EventScratch::half_sides) are apart along some axis, with a relative slack for
+    /// boxes (EventReach::half_sides) are apart along some axis, with a relative slack for
     /// rounding as the spheres' test has. Never for a plane, whose box is infinite (its
     /// bounding radius is).
     [[nodiscard]] bool boxes_apart(std::uint32_t a, std::uint32_t b) const {
         if (!boxes_) return false;
         const Vector3& p = scratch_.reach[a].origin;
         const Vector3& q = scratch_.reach[b].origin;
-        const Vector3& p_half = scratch_.half_sides[a];
-        const Vector3& q_half = scratch_.half_sides[b];
+        const Vector3& p_half = scratch_.reach[a].half_sides;
+        const Vector3& q_half = scratch_.reach[b].half_sides;
         const auto apart = [](double x, double y, double half_x, double half_y) {
             constexpr double slack = tolerances::conservative_slack;
             return std::abs(x - y) > (half_x + half_y) * (1.0 + slack) + slack * (std::abs(x) + std::abs(y));
@@ -982,13 +986,14 @@ private:
     }
 
     /// True when the broad phase at the start of the step found bodies i and j (its test, on
-    /// the proxies it read): a search of either's widened sphere, never narrower than then,
-    /// finds the other again, so the pair needs no dormant entry.
+    /// the same numbers): a search of either's widened sphere, never narrower than then, finds
+    /// the other again, so the pair needs no dormant entry.
     [[nodiscard]] bool found_at_start(std::uint32_t i, std::uint32_t j) const {
-        const GridProxy& p = scratch_.proxies.proxies[i];
-        const GridProxy& q = scratch_.proxies.proxies[j];
+        const EventScratch& s = scratch_;
+        const Vector3& p = s.reach[i].origin;
+        const Vector3& q = s.reach[j].origin;
         const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-        const double radii = p.radius + q.radius;
+        const double radii = s.start_radius[i] + s.start_radius[j];
         return dx * dx + dy * dy + dz * dz <= radii * radii * (1.0 + tolerances::conservative_slack);
     }
 
@@ -1009,8 +1014,8 @@ private:
     /// does not leave stay narrow.
     bool widen_box(std::uint32_t i, double t) {
         if (!boxes_) return false;
-        const EventReach& reach = scratch_.reach[i];
-        Vector3& half_sides = scratch_.half_sides[i];
+        EventReach& reach = scratch_.reach[i];
+        Vector3& half_sides = reach.half_sides;
         const Vector3 needs = needs_reach_along_axes(i, t);
         const double radius = scratch_.state[i].bounding_radius;
         bool widened = false;
