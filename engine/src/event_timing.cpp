@@ -710,8 +710,11 @@ private:
         for (const BodyPair& p : s.pairs)
             if (!boxes_apart(p.first, p.second)) s.pairs[kept++] = p;
         s.pairs.resize(kept);
-        constexpr std::uint32_t pause = 16;
-        if (2 * kept > found) s.use_boxes = false, s.steps_without_boxes = pause;
+        if (2 * kept > found) {
+            constexpr std::uint32_t pause = 16;  // 15 steps without boxes, then one that tries them
+            s.use_boxes = false;
+            s.steps_without_boxes = pause;
+        }
     }
 
     /// `pairs` as lists by body (a counting sort): body i's partners are partners[start[i]]

@@ -114,7 +114,7 @@ struct EventScratch {
     std::vector<double> start_radius;
     /// Whether the next step uses boxes: they cost a pass over the bodies and one over the
     /// broad phase's pairs, and pay only where they leave out many pairs. A step with boxes
-    /// that leaves out fewer than half of them turns them off for the next steps_without_boxes.
+    /// that leaves out fewer than half of them turns them off for 15 steps (steps_without_boxes).
     bool use_boxes = true;
     std::uint32_t steps_without_boxes = 0;  ///< steps left before boxes are tried again
     std::vector<std::uint32_t> events;     ///< per body: events it took part in this step
