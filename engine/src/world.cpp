@@ -200,14 +200,21 @@ void World::detect() {
         // After integrate_impact_to_impact(), which found the overlapping pairs among those
         // whose bodies came near each other, in index order as below.
         impacts_fresh_ = false;
-        contacts_.clear();
         // The impacts' contacts go first, where the step leaves them (keep_answered_impacts()),
         // put there now rather than moved in front of the pairs found below once the step is
         // answered: in a pile that moved two contacts per body every step. respond() and
-        // correct() pass over them (they were answered at their moment).
-        contacts_.insert(contacts_.end(), event_scratch_.contacts.begin(), event_scratch_.contacts.end());
-        answered_first_ = event_scratch_.contacts.size();
+        // correct() pass over them (they were answered at their moment). The two vectors trade
+        // places rather than copy: the copy was 176 bytes per impact, a pile of 100,000 has
+        // 55,000 a step, and the last step's contacts, no longer needed, leave room for the next
+        // step's impacts.
+        contacts_.swap(event_scratch_.contacts);
+        event_scratch_.contacts.clear();
+        answered_first_ = contacts_.size();
         impacts_placed_ = true;
+        // Room for a contact per overlapping pair, twice over when it grows: the two vectors take
+        // turns, and each must keep room for the impacts and the contacts of a step.
+        const std::size_t needed = contacts_.size() + impacts_.overlapping_pairs.size();
+        if (contacts_.capacity() < needed) contacts_.reserve(2 * needed);
         used_broad_phase_ = impacts_.used_grid;
         for (const auto [i, j] : impacts_.overlapping_pairs) add_contact_if_any(i, j);
         return;
