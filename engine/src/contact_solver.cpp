@@ -76,6 +76,25 @@ std::span<const Contact> clamp_depths(std::span<const Contact> contacts, std::ve
     return seen;
 }
 
+using PassFunction = double (*)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
+
+/// One pass of the chapter's `solve` (and `then`, unless null, on the same contact) over
+/// `contacts` in their order, `pairs` their bodies' places among `bodies`; the largest change
+/// they return. Its own function with everything it reads passed by value: the passes call
+/// the chapter hundreds of times a step for every contact, and the loop around those calls
+/// otherwise reloaded the solver's members around every one.
+double one_pass(PassFunction solve, PassFunction then, std::span<RigidBody> bodies, std::span<const Contact> contacts,
+                std::span<const std::array<std::uint32_t, 2>> pairs, std::span<ContactImpulses> impulses) {
+    double largest = 0.0;
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        RigidBody& body1 = bodies[pairs[c][0]];
+        RigidBody& body2 = bodies[pairs[c][1]];
+        largest = std::max(largest, solve(body1, body2, contacts[c], impulses[c]));
+        if (then != nullptr) largest = std::max(largest, then(body1, body2, contacts[c], impulses[c]));
+    }
+    return largest;
+}
+
 }  // namespace
 
 std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
@@ -338,14 +357,8 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
     }
     auto velocity_passes = [&](bool with_friction) {
         for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
-            double largest = 0.0;
-            for (std::size_t c = 0; c < seen.size(); ++c) {
-                const Contact& contact = seen[c];
-                largest = std::max(largest, hooks.solve_velocity(first(c), second(c), contact, impulses[c]));
-                if (with_friction)
-                    largest = std::max(largest, hooks.solve_friction(first(c), second(c), contact,
-                                                                     impulses[c]));
-            }
+            const double largest =
+                one_pass(hooks.solve_velocity, with_friction ? hooks.solve_friction : nullptr, bodies, seen, pairs_, impulses);
             ++report.velocity_passes;
             report.velocity_residual = largest;
             if (!(largest > settings.tolerance)) break;
@@ -476,12 +489,7 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
             bodies[b].velocity = bodies[b].angular_velocity = Vector3{};
         }
         for (int pass = 0; pass < settings.position_iterations; ++pass) {
-            double largest = 0.0;
-            for (std::size_t c = 0; c < adjusted_.size(); ++c) {
-                const Contact& contact = adjusted_[c];
-                largest =
-                    std::max(largest, hooks.solve_position(first(c), second(c), contact, impulses[c]));
-            }
+            const double largest = one_pass(hooks.solve_position, nullptr, bodies, adjusted_, pairs_, impulses);
             report.position_passes = pass + 1;
             report.position_residual = largest;
             if (!(largest > settings.tolerance)) break;
