@@ -263,7 +263,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     order_passes(contacts, up);
     // The passes, hundreds a step, read the contacts, their impulses and their bodies front to
     // back: copies in the order of the passes, not scattered over detection's list and the
-    // world's bodies, where a pile's passes spent most of their time waiting on memory.
+    // world's bodies, where a pile's passes spent much of their time waiting on memory.
     stage(contacts, speculative);
     recall(staged_, staged_impulses_, settings, report);
     solve_staged(gather(bodies), contacts, hooks, settings, knobs, dt, up, report);
