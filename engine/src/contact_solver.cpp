@@ -65,12 +65,34 @@ Softness soft_contact(double hertz, double damping_ratio, double h) {
 /// The contacts as the chapter's functions may see them: a speculative point (negative depth,
 /// the pair still apart by that much) with depth 0, so that its bias is 0 and every depth is
 /// in the functions' legal domain. The solver sets such a point's target itself.
+void clamp_depths(Contact& contact) {
+    for (std::size_t i = 0; i < contact.point_count; ++i)
+        contact.points[i].penetration = std::max(contact.points[i].penetration, 0.0);
+}
+
 std::span<const Contact> clamp_depths(std::span<const Contact> contacts, std::vector<Contact>& seen) {
     seen.assign(contacts.begin(), contacts.end());
-    for (Contact& contact : seen)
-        for (std::size_t i = 0; i < contact.point_count; ++i)
-            contact.points[i].penetration = std::max(contact.points[i].penetration, 0.0);
+    for (Contact& contact : seen) clamp_depths(contact);
     return seen;
+}
+
+using PassFunction = double (*)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
+
+/// One pass of the chapter's `solve` (and `then`, unless null, on the same contact) over
+/// `contacts` in their order, `pairs` their bodies' places among `bodies`; the largest change
+/// they return. Its own function with everything it reads passed by value: the passes call
+/// the chapter hundreds of times a step for every contact, and the loop around those calls
+/// otherwise reloaded the solver's members around every one.
+double one_pass(PassFunction solve, PassFunction then, std::span<RigidBody> bodies, std::span<const Contact> contacts,
+                std::span<const std::array<std::uint32_t, 2>> pairs, std::span<ContactImpulses> impulses) {
+    double largest = 0.0;
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        RigidBody& body1 = bodies[pairs[c][0]];
+        RigidBody& body2 = bodies[pairs[c][1]];
+        largest = std::max(largest, solve(body1, body2, contacts[c], impulses[c]));
+        if (then != nullptr) largest = std::max(largest, then(body1, body2, contacts[c], impulses[c]));
+    }
+    return largest;
 }
 
 }  // namespace
@@ -83,12 +105,12 @@ std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
     return {t1, cross(normal, t1)};
 }
 
-void ContactSolver::recall(std::span<const Contact> contacts, const ContactSolverSettings& settings,
-                           ContactSolverReport& report) {
+void ContactSolver::recall(std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of,
+                           const ContactSolverSettings& settings, ContactSolverReport& report) {
     const double reach2 = settings.match_distance * settings.match_distance;
     for (std::size_t c = 0; c < contacts.size(); ++c) {
         const Contact& contact = contacts[c];
-        ContactImpulses& impulses = impulses_[c];
+        ContactImpulses& impulses = impulses_of[c];
         if (!settings.warm_start || previous_.empty()) continue;
         const auto found = std::lower_bound(previous_.begin(), previous_.end(), pair_key(contact),
                                             [](const Remembered& r, std::uint64_t key) { return r.pair < key; });
@@ -149,6 +171,10 @@ void ContactSolver::reserve(std::size_t contacts) {
     impulses_.reserve(contacts);
     adjusted_.reserve(contacts);
     seen_.reserve(contacts);
+    staged_.reserve(contacts);
+    staged_impulses_.reserve(contacts);
+    rank_.reserve(contacts);
+    pairs_.reserve(contacts);
     order_.reserve(contacts);
     height_.reserve(contacts);
     previous_.reserve(contacts);
@@ -156,32 +182,7 @@ void ContactSolver::reserve(std::size_t contacts) {
     soft_points_.reserve(contacts * max_contact_points);
 }
 
-ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
-                                         const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
-                                         const PositionCorrection& knobs, double dt, const Vector3& up,
-                                         const Vector3& gravity, double gravity_position_factor,
-                                         std::span<const std::uint8_t> woken) {
-    ContactSolverReport report;
-    impulses_.assign(contacts.size(), ContactImpulses{});
-    recall(contacts, settings, report);
-    // With speculative contacts the chapter's functions get the contacts with every depth at
-    // least 0 (`seen`); the gaps are read from `contacts`.
-    const bool speculative = settings.speculative_distance > 0.0;
-    const std::span<const Contact> seen = speculative ? clamp_depths(contacts, seen_) : contacts;
-    if (settings.substeps > 0) {
-        solve_in_substeps(bodies, contacts, seen, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
-        remember(contacts);
-        return report;
-    }
-
-    // The velocities before the solve: its change of them also moves the bodies (below).
-    saved_velocity_.resize(bodies.size());
-    saved_angular_velocity_.resize(bodies.size());
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-        saved_velocity_[b] = bodies[b].velocity;
-        saved_angular_velocity_[b] = bodies[b].angular_velocity;
-    }
-
+void ContactSolver::order_passes(std::span<const Contact> contacts, const Vector3& up) {
     // The order of the passes: from the bottom up against gravity, by the height of each
     // contact's points, so that the weight of a stack reaches the ground in the first pass
     // (the ground's contact under a ball comes before the contact on top of that ball). Ties
@@ -199,11 +200,100 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
         return height_[a] < height_[b] || (height_[a] == height_[b] && a < b);
     });
+}
+
+void ContactSolver::stage(std::span<const Contact> contacts, bool speculative) {
+    rank_.resize(contacts.size());
+    staged_.resize(contacts.size());
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        rank_[order_[c]] = static_cast<std::uint32_t>(c);
+        staged_[c] = contacts[order_[c]];
+        if (speculative) clamp_depths(staged_[c]);
+    }
+    staged_impulses_.assign(contacts.size(), ContactImpulses{});
+}
+
+std::span<RigidBody> ContactSolver::gather(std::span<const RigidBody> bodies) {
+    constexpr std::uint32_t none = ~std::uint32_t{0};
+    local_.assign(bodies.size(), none);
+    // Reserved for every body of the world: a warm step allocates nothing however many it touches.
+    global_.reserve(bodies.size());
+    staged_bodies_.reserve(bodies.size());
+    saved_velocity_.reserve(bodies.size());
+    saved_angular_velocity_.reserve(bodies.size());
+    global_.clear();
+    staged_bodies_.clear();
+    pairs_.resize(staged_.size());
+    for (std::size_t c = 0; c < staged_.size(); ++c) {
+        for (const std::uint32_t b : {staged_[c].body1, staged_[c].body2})
+            if (local_[b] == none) {
+                local_[b] = static_cast<std::uint32_t>(global_.size());
+                global_.push_back(b);
+                staged_bodies_.push_back(bodies[b]);
+            }
+        pairs_[c] = {local_[staged_[c].body1], local_[staged_[c].body2]};
+    }
+    return staged_bodies_;
+}
+
+void ContactSolver::put_back(std::span<RigidBody> bodies) {
+    for (std::size_t b = 0; b < staged_bodies_.size(); ++b) bodies[global_[b]] = staged_bodies_[b];
+    impulses_.resize(staged_impulses_.size());
+    for (std::size_t c = 0; c < staged_impulses_.size(); ++c) impulses_[order_[c]] = staged_impulses_[c];
+}
+
+ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<const Contact> contacts,
+                                         const ContactSolverHooks& hooks, const ContactSolverSettings& settings,
+                                         const PositionCorrection& knobs, double dt, const Vector3& up,
+                                         const Vector3& gravity, double gravity_position_factor,
+                                         std::span<const std::uint8_t> woken) {
+    ContactSolverReport report;
+    // With speculative contacts the chapter's functions get the contacts with every depth at
+    // least 0 (`seen`); the gaps are read from `contacts`.
+    const bool speculative = settings.speculative_distance > 0.0;
+    if (settings.substeps > 0) {
+        impulses_.assign(contacts.size(), ContactImpulses{});
+        recall(contacts, impulses_, settings, report);
+        const std::span<const Contact> seen = speculative ? clamp_depths(contacts, seen_) : contacts;
+        solve_in_substeps(bodies, contacts, seen, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
+        remember(contacts);
+        return report;
+    }
+
+    order_passes(contacts, up);
+    // The passes, hundreds a step, read the contacts, their impulses and their bodies front to
+    // back: copies in the order of the passes, not scattered over detection's list and the
+    // world's bodies, where a pile's passes spent much of their time waiting on memory.
+    stage(contacts, speculative);
+    recall(staged_, staged_impulses_, settings, report);
+    solve_staged(gather(bodies), contacts, hooks, settings, knobs, dt, up, report);
+    put_back(bodies);
+    remember(contacts);
+    return report;
+}
+
+void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                                 const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
+                                 const Vector3& up, ContactSolverReport& report) {
+    const bool speculative = settings.speculative_distance > 0.0;
+    const std::span<const Contact> seen = staged_;
+    const std::span<ContactImpulses> impulses = staged_impulses_;
+    // The two bodies of the contact in place c of the passes.
+    auto first = [&](std::size_t c) -> RigidBody& { return bodies[pairs_[c][0]]; };
+    auto second = [&](std::size_t c) -> RigidBody& { return bodies[pairs_[c][1]]; };
+
+    // The velocities before the solve: its change of them also moves the bodies (below).
+    saved_velocity_.resize(bodies.size());
+    saved_angular_velocity_.resize(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        saved_velocity_[b] = bodies[b].velocity;
+        saved_angular_velocity_[b] = bodies[b].angular_velocity;
+    }
 
     // 1. What each point aims for, computed once from the velocities before any impulse.
     for (std::size_t c = 0; c < contacts.size(); ++c) {
         const Contact& contact = seen[c];
-        hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
+        hooks.prepare(first(c), second(c), contact, impulses[c], settings, knobs, dt);
     }
     // A speculative point, apart by s at detection: this solve moves the bodies by its change
     // of their velocities times dt (below), so the pair ends the step apart by
@@ -214,9 +304,9 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // never meets is left as it is; and no bounce: the pair has not touched yet.
     if (speculative) {
         for (std::size_t c = 0; c < contacts.size(); ++c) {
-            const Contact& contact = contacts[c];
-            const RigidBody& body1 = bodies[contact.body1];
-            const RigidBody& body2 = bodies[contact.body2];
+            const Contact& contact = contacts[order_[c]];
+            const RigidBody& body1 = first(c);
+            const RigidBody& body2 = second(c);
             for (std::size_t i = 0; i < contact.point_count; ++i) {
                 const double gap = -contact.points[i].penetration;
                 if (!(gap > 0.0)) continue;
@@ -224,18 +314,20 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
                 const Vector3 v1 = body1.velocity + cross(body1.angular_velocity, at - body1.position);
                 const Vector3 v2 = body2.velocity + cross(body2.angular_velocity, at - body2.position);
                 const double u0 = dot(v1 - v2, contact.normal);
-                impulses_[c].points[i].bounce = std::max(u0, 0.0) - gap / dt;
+                impulses[c].points[i].bounce = std::max(u0, 0.0) - gap / dt;
             }
         }
     }
+    // In detection's order: the impulses add up on each body in the order they come.
     if (settings.warm_start) {
         const bool with_friction = hooks.solve_friction != nullptr && hooks.tangents != nullptr;
-        for (std::size_t c = 0; c < contacts.size(); ++c) {
+        for (std::size_t detected = 0; detected < contacts.size(); ++detected) {
+            const std::uint32_t c = rank_[detected];
             const Contact& contact = seen[c];
             if (with_friction)
-                warm_start_with_friction(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], hooks.tangents);
+                warm_start_with_friction(first(c), second(c), contact, impulses[c], hooks.tangents);
             else
-                hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
+                hooks.warm_start(first(c), second(c), contact, impulses[c]);
         }
     }
 
@@ -250,13 +342,13 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // Only where friction acts: without it the bounce comes as in chapter 5, in one phase.
     bool two_phases = false;
     for (std::size_t c = 0; c < contacts.size() && hooks.solve_friction != nullptr && !two_phases; ++c)
-        two_phases = bodies[contacts[c].body1].static_friction * bodies[contacts[c].body2].static_friction > 0.0;
+        two_phases = first(c).static_friction * second(c).static_friction > 0.0;
     bool any_bounce = false;
     if (two_phases) {
         bounces_.resize(contacts.size() * max_contact_points);
         for (std::size_t c = 0; c < contacts.size(); ++c)
             for (std::size_t i = 0; i < max_contact_points; ++i) {
-                double& bounce = impulses_[c].points[i].bounce;
+                double& bounce = impulses[c].points[i].bounce;
                 bounces_[c * max_contact_points + i] = bounce;
                 if (speculative && bounce < 0.0) continue;  // a gap's target holds in both phases
                 any_bounce = any_bounce || bounce != 0.0;
@@ -265,15 +357,8 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     }
     auto velocity_passes = [&](bool with_friction) {
         for (int pass = 0; pass < settings.velocity_iterations; ++pass) {
-            double largest = 0.0;
-            for (std::size_t k = 0; k < order_.size(); ++k) {
-                const std::uint32_t c = order_[k];
-                const Contact& contact = seen[c];
-                largest = std::max(largest, hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
-                if (with_friction)
-                    largest = std::max(largest, hooks.solve_friction(bodies[contact.body1], bodies[contact.body2], contact,
-                                                                     impulses_[c]));
-            }
+            const double largest =
+                one_pass(hooks.solve_velocity, with_friction ? hooks.solve_friction : nullptr, bodies, seen, pairs_, impulses);
             ++report.velocity_passes;
             report.velocity_residual = largest;
             if (!(largest > settings.tolerance)) break;
@@ -282,7 +367,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     velocity_passes(hooks.solve_friction != nullptr);
     if (any_bounce) {
         for (std::size_t c = 0; c < contacts.size(); ++c)
-            for (std::size_t i = 0; i < max_contact_points; ++i) impulses_[c].points[i].bounce = bounces_[c * max_contact_points + i];
+            for (std::size_t i = 0; i < max_contact_points; ++i) impulses[c].points[i].bounce = bounces_[c * max_contact_points + i];
         velocity_passes(false);
     }
 
@@ -297,11 +382,10 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // pile instead of the disc up. `up` is -gravity, not a unit vector.
     const double up_length = length(up);
     auto shock_sweep = [&](std::span<const Contact> list) {
-        for (std::size_t k = 0; k < order_.size(); ++k) {
-            const std::uint32_t c = order_[k];
+        for (std::size_t c = 0; c < list.size(); ++c) {
             const Contact& contact = list[c];
-            RigidBody& body1 = bodies[contact.body1];
-            RigidBody& body2 = bodies[contact.body2];
+            RigidBody& body1 = first(c);
+            RigidBody& body2 = second(c);
             // Where friction acts the passes have solved the normal and friction impulses
             // together, the friction within the cone of the normal; a sweep along the normal
             // alone would change the normal impulse under friction that no longer matches it.
@@ -319,12 +403,12 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
                     upper = &body2;
                 }
             }
-            ContactImpulses& impulses = impulses_[c];
+            ContactImpulses& contact_impulses = impulses[c];
             if (lower == nullptr) {
-                hooks.solve_velocity(body1, body2, contact, impulses);
+                hooks.solve_velocity(body1, body2, contact, contact_impulses);
                 continue;
             }
-            const ContactImpulses saved = impulses;
+            const ContactImpulses saved = contact_impulses;
             const double inverse_mass = lower->inverse_mass;
             const Matrix3 inverse_inertia = lower->inverse_inertia_world;
             lower->inverse_mass = 0.0;
@@ -332,25 +416,25 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             // prepare() fills the frozen pair's masses; what else it sets (bounce, bias, the
             // pseudo-impulse) comes back from before, since it would be computed from the
             // velocities the passes have changed.
-            hooks.prepare(body1, body2, contact, impulses, settings, knobs, dt);
+            hooks.prepare(body1, body2, contact, contact_impulses, settings, knobs, dt);
             for (std::size_t i = 0; i < contact.point_count; ++i) {
-                const double mass = impulses.points[i].mass;
-                impulses.points[i] = saved.points[i];
-                impulses.points[i].mass = mass;
+                const double mass = contact_impulses.points[i].mass;
+                contact_impulses.points[i] = saved.points[i];
+                contact_impulses.points[i].mass = mass;
             }
             const Vector3 velocity = upper->velocity, angular_velocity = upper->angular_velocity;
             const double before = kinetic_energy(*upper);
-            hooks.solve_velocity(body1, body2, contact, impulses);
+            hooks.solve_velocity(body1, body2, contact, contact_impulses);
             lower->inverse_mass = inverse_mass;
             lower->inverse_inertia_world = inverse_inertia;
-            for (std::size_t i = 0; i < contact.point_count; ++i) impulses.points[i].mass = saved.points[i].mass;
+            for (std::size_t i = 0; i < contact.point_count; ++i) contact_impulses.points[i].mass = saved.points[i].mass;
             // Only the upper body changed: if it gained kinetic energy (its lower neighbour
             // moves into it faster than it comes down), the contact is solved two-sided.
             if (kinetic_energy(*upper) > before) {
                 upper->velocity = velocity;
                 upper->angular_velocity = angular_velocity;
-                impulses = saved;
-                hooks.solve_velocity(body1, body2, contact, impulses);
+                contact_impulses = saved;
+                hooks.solve_velocity(body1, body2, contact, contact_impulses);
             }
         }
     };
@@ -360,13 +444,13 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // belongs to this step too (as when the solve comes before the move, the order of Box2D
     // and Chipmunk): each body moves by that change times dt, and each point's depth is
     // estimated after that move. A resting stack then does not sink by g dt^2 a step.
-    adjusted_.assign(contacts.begin(), contacts.end());
+    adjusted_.resize(contacts.size());
     for (std::size_t c = 0; c < contacts.size(); ++c) {
-        Contact& contact = adjusted_[c];
-        const RigidBody& body1 = bodies[contact.body1];
-        const RigidBody& body2 = bodies[contact.body2];
-        const Vector3 dv1 = body1.velocity - saved_velocity_[contact.body1], dw1 = body1.angular_velocity - saved_angular_velocity_[contact.body1];
-        const Vector3 dv2 = body2.velocity - saved_velocity_[contact.body2], dw2 = body2.angular_velocity - saved_angular_velocity_[contact.body2];
+        Contact& contact = adjusted_[c] = contacts[order_[c]];
+        const RigidBody& body1 = first(c);
+        const RigidBody& body2 = second(c);
+        const Vector3 dv1 = body1.velocity - saved_velocity_[pairs_[c][0]], dw1 = body1.angular_velocity - saved_angular_velocity_[pairs_[c][0]];
+        const Vector3 dv2 = body2.velocity - saved_velocity_[pairs_[c][1]], dw2 = body2.angular_velocity - saved_angular_velocity_[pairs_[c][1]];
         contact.penetration = 0.0;
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             ContactPoint& point = contact.points[i];
@@ -393,11 +477,11 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // velocities come back untouched. Kinetic energy cannot change here.
     for (std::size_t c = 0; c < adjusted_.size(); ++c) {
         const Contact& contact = adjusted_[c];
-        hooks.prepare(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], settings, knobs, dt);
+        hooks.prepare(first(c), second(c), contact, impulses[c], settings, knobs, dt);
     }
     bool any_bias = false;
     for (std::size_t c = 0; c < contacts.size() && !any_bias; ++c)
-        for (std::size_t i = 0; i < contacts[c].point_count; ++i) any_bias = any_bias || impulses_[c].points[i].bias > 0.0;
+        for (std::size_t i = 0; i < seen[c].point_count; ++i) any_bias = any_bias || impulses[c].points[i].bias > 0.0;
     if (any_bias && settings.position_iterations > 0) {
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             saved_velocity_[b] = bodies[b].velocity;
@@ -405,13 +489,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             bodies[b].velocity = bodies[b].angular_velocity = Vector3{};
         }
         for (int pass = 0; pass < settings.position_iterations; ++pass) {
-            double largest = 0.0;
-            for (std::size_t k = 0; k < order_.size(); ++k) {
-                const std::uint32_t c = order_[k];
-                const Contact& contact = adjusted_[c];
-                largest =
-                    std::max(largest, hooks.solve_position(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]));
-            }
+            const double largest = one_pass(hooks.solve_position, nullptr, bodies, adjusted_, pairs_, impulses);
             report.position_passes = pass + 1;
             report.position_residual = largest;
             if (!(largest > settings.tolerance)) break;
@@ -426,8 +504,6 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
             body.angular_velocity = saved_angular_velocity_[b];
         }
     }
-    remember(contacts);
-    return report;
 }
 
 void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected,

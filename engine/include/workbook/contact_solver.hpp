@@ -252,13 +252,40 @@ private:
                            const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
                            const Vector3& gravity, double gravity_position_factor, std::span<const std::uint8_t> woken,
                            ContactSolverReport& report);
-    void recall(std::span<const Contact> contacts, const ContactSolverSettings& settings, ContactSolverReport& report);
+    /// Puts into `impulses_of` (one per contact, in the order of `contacts`) the impulses last
+    /// remembered for the same points.
+    void recall(std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of, const ContactSolverSettings& settings,
+                ContactSolverReport& report);
+    /// Sets order_: the contacts from the bottom up along `up`.
+    void order_passes(std::span<const Contact> contacts, const Vector3& up);
+    /// Copies `contacts` in the order of the passes into staged_, as the chapter's functions
+    /// see them (with speculative contacts, every depth at least 0), with rank_ and zero
+    /// impulses in staged_impulses_ beside them.
+    void stage(std::span<const Contact> contacts, bool speculative);
+    /// Copies the bodies of the staged contacts into staged_bodies_, in the order the passes
+    /// first meet them, and sets global_ and pairs_; returns staged_bodies_.
+    std::span<RigidBody> gather(std::span<const RigidBody> bodies);
+    /// The rigid solve (steps 1 to 3 of solve()) on the staged contacts and impulses and the
+    /// gathered `bodies`; `contacts` are the contacts as detected, in detection's order.
+    void solve_staged(std::span<RigidBody> bodies, std::span<const Contact> contacts, const ContactSolverHooks& hooks,
+                      const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt, const Vector3& up,
+                      ContactSolverReport& report);
+    /// Writes the gathered bodies back into `bodies` and the staged impulses into impulses_,
+    /// in detection's order.
+    void put_back(std::span<RigidBody> bodies);
     void remember(std::span<const Contact> contacts);
 
     std::vector<ContactImpulses> impulses_;
-    std::vector<Contact> adjusted_;
+    std::vector<Contact> adjusted_;  ///< the contacts, in the order of the passes, with each point's depth after the velocity solve's move
     std::vector<std::uint32_t> order_;  ///< the contacts in the order of the passes
-    std::vector<double> height_;        ///< each contact's height along `up`, for the order  ///< the contacts with each point's depth after the velocity solve's move
+    std::vector<std::uint32_t> rank_;   ///< each contact's place in that order
+    std::vector<Contact> staged_;       ///< the contacts in that order, as the chapter's functions see them
+    std::vector<ContactImpulses> staged_impulses_;  ///< their impulses, in that order
+    std::vector<std::array<std::uint32_t, 2>> pairs_;  ///< the staged contacts' two bodies among staged_bodies_
+    std::vector<RigidBody> staged_bodies_;  ///< copies of the bodies of the staged contacts, in the order the passes first meet them
+    std::vector<std::uint32_t> global_;     ///< each staged body's index in the world
+    std::vector<std::uint32_t> local_;      ///< each body's index among staged_bodies_ (or none)
+    std::vector<double> height_;        ///< each contact's height along `up`, for the order
     std::vector<Remembered> previous_;
     std::vector<Remembered> current_;
     std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
