@@ -232,6 +232,42 @@ std::vector<StressScene> stress_corpus(bool full) {
         scene.own_check = [](const World& world) { return world.bodies().back().position.x < 0.0 ? 0.0 : 2.0; };
         corpus.push_back(scene);
     }
+    // Event timing, balls at rest knocked into each other: two balls that impacts set moving
+    // towards each other within one step must meet (each is searched again when it moves).
+    {
+        StressScene scene;
+        scene.name = "event-knocked-crowd";
+        scene.what = "144 balls at rest 2 cm apart, one in eight thrown sideways, event timing, e = 1, no gravity";
+        scene.steps = 240;
+        scene.box = cube({0.3, 0.18, 0.3}, 1.0);
+        scene.build = [box = *scene.box](const ResponseModel& model) {
+            std::mt19937_64 random(corpus_seed);
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            std::vector<RigidBody> bodies = walls(box);
+            for (int i = 0; i < 6; ++i)
+                for (int j = 0; j < 4; ++j)
+                    for (int k = 0; k < 6; ++k) {
+                        const bool thrown = unit(random) < 0.125;
+                        const Vector3 velocity = thrown ? Vector3{6.0 * unit(random) - 3.0, 0.0, 6.0 * unit(random) - 3.0} : Vector3{};
+                        bodies.push_back(make_sphere(1.0, 0.05, {0.12 * i, 0.12 * j, 0.12 * k}, velocity));
+                    }
+            WorldSettings settings = settings_with(1.0 / 60, {});
+            settings.contact_timing = ContactTiming::event;
+            return World(bodies, settings, model);
+        };
+        // No two balls overlap by more than a millionth of a radius after a step: a missed
+        // impact leaves them a good part of a radius into each other.
+        scene.own_check_name = "overlap";
+        scene.own_check = [](const World& world) {
+            const auto balls = world.bodies().subspan(6);
+            double deepest = 0.0;
+            for (std::size_t a = 0; a < balls.size(); ++a)
+                for (std::size_t b = a + 1; b < balls.size(); ++b)
+                    deepest = std::max(deepest, 0.1 - length(balls[a].position - balls[b].position));
+            return deepest / (1e-6 * 0.05);
+        };
+        corpus.push_back(scene);
+    }
     // Event timing with many bodies: scales with N (candidates from the broad phase).
     {
         StressScene scene = boxed("event-gas", full ? "2,000 balls in a box, event timing, e = 1, no gravity"
