@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "workbook/guards.hpp"
 #include "workbook/probes.hpp"
@@ -237,7 +238,7 @@ std::vector<StressScene> stress_corpus(bool full) {
     {
         StressScene scene;
         scene.name = "event-knocked-crowd";
-        scene.what = "144 balls at rest 2 cm apart, one in eight thrown sideways, event timing, e = 1, no gravity";
+        scene.what = "144 balls 2 cm apart, one in eight thrown, and two at rest knocked into each other, event timing, e = 1";
         scene.steps = 240;
         scene.box = cube({0.3, 0.18, 0.3}, 1.0);
         scene.build = [box = *scene.box](const ResponseModel& model) {
@@ -251,6 +252,10 @@ std::vector<StressScene> stress_corpus(bool full) {
                         const Vector3 velocity = thrown ? Vector3{6.0 * unit(random) - 3.0, 0.0, 6.0 * unit(random) - 3.0} : Vector3{};
                         bodies.push_back(make_sphere(1.0, 0.05, {0.12 * i, 0.12 * j, 0.12 * k}, velocity));
                     }
+            // Below the crowd, the smallest such case: two balls at rest 2 cm apart, each hit
+            // from outside within the first step, each search alone short of the other ball.
+            for (const auto& [x, vx] : {std::pair{0.0, 0.0}, {0.12, 0.0}, {-0.12, 2.0}, {0.24, -2.2}})
+                bodies.push_back(make_sphere(1.0, 0.05, {x, -0.5, 0.3}, {vx, 0.0, 0.0}));
             WorldSettings settings = settings_with(1.0 / 60, {});
             settings.contact_timing = ContactTiming::event;
             return World(bodies, settings, model);
