@@ -180,6 +180,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     if (cell_start_.capacity() < budget + 1) cell_start_.reserve(budget + 1);  // the most cells there can be
     cell_start_.assign(cells + 1, 0);
     resize_with_room(cell_of_, set.proxies.size());
+    resize_with_room(slot_of_, set.proxies.size());
     std::size_t in_grid = 0;
     for (std::size_t k = 0; k < set.proxies.size(); ++k) {
         const GridProxy& p = set.proxies[k];
@@ -209,6 +210,7 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     for (std::size_t k = 0; k < set.proxies.size(); ++k) {
         if (cell_of_[k] == not_in_grid) continue;
         const std::uint32_t slot = cell_start_[cell_of_[k]]++;
+        slot_of_[k] = slot;
         const GridProxy& p = set.proxies[k];
         if (small_cells_) {
             small_by_cell_[slot] = {p.x, p.y, p.z, p.radius, p.index, p.movable};
@@ -445,6 +447,16 @@ void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs, bool 
     for (const BodyPair& p : sweep_pairs_) sweep_partners_[sweep_start_[p.first]++] = p.second;
     for (std::size_t i = count; i > 0; --i) sweep_start_[i] = sweep_start_[i - 1];
     sweep_start_[0] = 0;
+}
+
+void BroadPhase::widen(ProxySet& set, std::uint32_t index, double radius) {
+    set.proxies[index].radius = std::max(set.proxies[index].radius, radius);
+    if (!has_grid_ || cell_of_[index] == not_in_grid) return;
+    const std::uint32_t slot = slot_of_[index];
+    if (small_cells_) small_by_cell_[slot].radius = std::max(small_by_cell_[slot].radius, radius);
+    else by_cell_[slot].radius = std::max(by_cell_[slot].radius, radius);
+    // bodies_near() looks as far as the widest proxy in the grid.
+    largest_radius_ = std::max(largest_radius_, radius);
 }
 
 void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double radius,

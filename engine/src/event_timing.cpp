@@ -980,7 +980,11 @@ private:
         EventScratch& s = scratch_;
         EventReach& reach = s.reach[i];
         const double needs = needs_reach(i, t);
-        if (needs > reach.reach) reach.reach = 1.1 * needs;
+        if (needs > reach.reach) {
+            reach.reach = 1.1 * needs;
+            // Later searches of other bodies find this one by its new reach (BroadPhase::widen()).
+            s.broad_phase.widen(s.proxies, i, s.state[i].bounding_radius + reach.reach);
+        }
         const bool widened = widen_box(i, t);
         // The sphere's search finds again the pairs the broad phase left dormant; those that a
         // partner found in a search of its own, from further off, are in its dormant list.

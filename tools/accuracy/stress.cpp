@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "workbook/guards.hpp"
 #include "workbook/probes.hpp"
@@ -230,6 +231,46 @@ std::vector<StressScene> stress_corpus(bool full) {
         };
         scene.own_check_name = "thin box";
         scene.own_check = [](const World& world) { return world.bodies().back().position.x < 0.0 ? 0.0 : 2.0; };
+        corpus.push_back(scene);
+    }
+    // Event timing, balls at rest knocked into each other: two balls that impacts set moving
+    // towards each other within one step must meet (each is searched again when it moves).
+    {
+        StressScene scene;
+        scene.name = "event-knocked-crowd";
+        scene.what = "144 balls 2 cm apart, one in eight thrown, and two at rest knocked into each other, event timing, e = 1";
+        scene.steps = 240;
+        scene.box = cube({0.3, 0.18, 0.3}, 1.0);
+        scene.build = [box = *scene.box](const ResponseModel& model) {
+            std::mt19937_64 random(corpus_seed);
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            std::vector<RigidBody> bodies = walls(box);
+            for (int i = 0; i < 6; ++i)
+                for (int j = 0; j < 4; ++j)
+                    for (int k = 0; k < 6; ++k) {
+                        const bool thrown = unit(random) < 0.125;
+                        const Vector3 velocity = thrown ? Vector3{6.0 * unit(random) - 3.0, 0.0, 6.0 * unit(random) - 3.0} : Vector3{};
+                        bodies.push_back(make_sphere(1.0, 0.05, {0.12 * i, 0.12 * j, 0.12 * k}, velocity));
+                    }
+            // Below the crowd, the smallest such case: two balls at rest 2 cm apart, each hit
+            // from outside within the first step, each search alone short of the other ball.
+            for (const auto& [x, vx] : {std::pair{0.0, 0.0}, {0.12, 0.0}, {-0.12, 2.0}, {0.24, -2.2}})
+                bodies.push_back(make_sphere(1.0, 0.05, {x, -0.5, 0.3}, {vx, 0.0, 0.0}));
+            WorldSettings settings = settings_with(1.0 / 60, {});
+            settings.contact_timing = ContactTiming::event;
+            return World(bodies, settings, model);
+        };
+        // No two balls overlap by more than a millionth of a radius after a step: a missed
+        // impact leaves them a good part of a radius into each other.
+        scene.own_check_name = "overlap";
+        scene.own_check = [](const World& world) {
+            const auto balls = world.bodies().subspan(6);
+            double deepest = 0.0;
+            for (std::size_t a = 0; a < balls.size(); ++a)
+                for (std::size_t b = a + 1; b < balls.size(); ++b)
+                    deepest = std::max(deepest, 0.1 - length(balls[a].position - balls[b].position));
+            return deepest / (1e-6 * 0.05);
+        };
         corpus.push_back(scene);
     }
     // Event timing with many bodies: scales with N (candidates from the broad phase).

@@ -194,6 +194,14 @@ public:
     /// cells near `centre` when there is a grid, every body otherwise.
     void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out) const;
 
+    /// After a find_pairs() of `set`: body `index` of the set (in set order, not a plane) now
+    /// reaches `radius` from its centre, more than when it was gathered; later bodies_near()
+    /// queries find it by that radius. Event timing widens a body that an impact sent further
+    /// than its reach: a body searching later must find it by where it may now get, not by
+    /// where it could get at the start of the step, or two bodies that impacts set moving
+    /// towards each other are candidates of neither.
+    void widen(ProxySet& set, std::uint32_t index, double radius);
+
     /// True when the last find_pairs() used a grid (false after it fell back to every pair).
     [[nodiscard]] bool has_grid() const { return has_grid_; }
 
@@ -227,6 +235,7 @@ private:
     std::vector<CellProxy> small_by_cell_;    ///< the same for a set without the swept test
     bool small_cells_ = false;                ///< the grid is in small_by_cell_ rather than by_cell_
     std::vector<std::uint32_t> cell_of_;      ///< cell of each proxy in set order (for the counting sort)
+    std::vector<std::uint32_t> slot_of_;      ///< slot of each proxy in set order in by_cell_ (or small_by_cell_), for widen()
     std::vector<std::uint32_t> cell_start_;   ///< first entry of each cell in by_cell_ (or small_by_cell_)
     std::vector<std::uint32_t> wide_;         ///< slots in by_cell_ of the wide proxies (see build_grid())
     std::vector<std::uint32_t> large_;        ///< slots in by_cell_ of the large proxies
