@@ -70,6 +70,12 @@ void clamp_depths(Contact& contact) {
         contact.points[i].penetration = std::max(contact.points[i].penetration, 0.0);
 }
 
+std::span<const Contact> clamp_depths(std::span<const Contact> contacts, std::vector<Contact>& seen) {
+    seen.assign(contacts.begin(), contacts.end());
+    for (Contact& contact : seen) clamp_depths(contact);
+    return seen;
+}
+
 using PassFunction = double (*)(RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& impulses);
 
 /// One pass of the chapter's `solve` (and `then`, unless null, on the same contact) over
@@ -164,6 +170,7 @@ void ContactSolver::reserve(std::size_t contacts) {
     if (impulses_.capacity() >= contacts) return;
     impulses_.reserve(contacts);
     adjusted_.reserve(contacts);
+    seen_.reserve(contacts);
     staged_.reserve(contacts);
     staged_impulses_.reserve(contacts);
     rank_.reserve(contacts);
@@ -195,11 +202,6 @@ void ContactSolver::order_passes(std::span<const Contact> contacts, const Vector
     });
 }
 
-void ContactSolver::in_detection_order(std::size_t count) {
-    order_.resize(count);
-    for (std::uint32_t c = 0; c < count; ++c) order_[c] = c;
-}
-
 void ContactSolver::stage(std::span<const Contact> contacts, bool speculative) {
     rank_.resize(contacts.size());
     staged_.resize(contacts.size());
@@ -219,9 +221,6 @@ std::span<RigidBody> ContactSolver::gather(std::span<const RigidBody> bodies) {
     staged_bodies_.reserve(bodies.size());
     saved_velocity_.reserve(bodies.size());
     saved_angular_velocity_.reserve(bodies.size());
-    shift_.reserve(bodies.size());
-    turn_.reserve(bodies.size());
-    touched_.reserve(bodies.size());
     global_.clear();
     staged_bodies_.clear();
     pairs_.resize(staged_.size());
@@ -252,21 +251,22 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // With speculative contacts the chapter's functions get the contacts with every depth at
     // least 0 (`seen`); the gaps are read from `contacts`.
     const bool speculative = settings.speculative_distance > 0.0;
-    // The soft step keeps detection's order: from the bottom up it settled no pile of discs
-    // better (measured on the bench's pile of 2,000 and 10,000 discs).
-    if (settings.substeps > 0)
-        in_detection_order(contacts.size());
-    else
-        order_passes(contacts, up);
+    if (settings.substeps > 0) {
+        impulses_.assign(contacts.size(), ContactImpulses{});
+        recall(contacts, impulses_, settings, report);
+        const std::span<const Contact> seen = speculative ? clamp_depths(contacts, seen_) : contacts;
+        solve_in_substeps(bodies, contacts, seen, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
+        remember(contacts);
+        return report;
+    }
+
+    order_passes(contacts, up);
     // The passes, hundreds a step, read the contacts, their impulses and their bodies front to
     // back: copies in the order of the passes, not scattered over detection's list and the
     // world's bodies, where a pile's passes spent much of their time waiting on memory.
     stage(contacts, speculative);
     recall(staged_, staged_impulses_, settings, report);
-    if (settings.substeps > 0)
-        solve_in_substeps(gather(bodies), contacts, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
-    else
-        solve_staged(gather(bodies), contacts, hooks, settings, knobs, dt, up, report);
+    solve_staged(gather(bodies), contacts, hooks, settings, knobs, dt, up, report);
     put_back(bodies);
     remember(contacts);
     return report;
@@ -506,7 +506,8 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
     }
 }
 
-void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected, const ContactSolverHooks& hooks,
+void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected,
+                                      std::span<const Contact> contacts, const ContactSolverHooks& hooks,
                                       const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt, const Vector3& gravity,
                                       double gravity_position_factor, std::span<const std::uint8_t> woken,
                                       ContactSolverReport& report) {
@@ -516,28 +517,24 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     const Softness soft = soft_contact(std::min(settings.contact_hertz, 0.25 / h), settings.contact_damping_ratio, h);
     const double max_push_speed = settings.max_push / dt;
     const bool with_friction = hooks.solve_friction != nullptr;
-    // The contacts as the chapter's functions see them and their impulses, staged in
-    // detection's order; `bodies` are the gathered ones, pairs_ their places.
-    const std::span<const Contact> contacts = staged_;
-    const std::span<ContactImpulses> impulses = staged_impulses_;
 
     // What each point aims for, from the velocities the world's move left (the bounce is the
     // approach it saw), and the lever arms, fixed over the step.
     soft_points_.resize(contacts.size() * max_contact_points);
     for (std::size_t c = 0; c < contacts.size(); ++c) {
         const Contact& contact = contacts[c];
-        const RigidBody& body1 = bodies[pairs_[c][0]];
-        const RigidBody& body2 = bodies[pairs_[c][1]];
-        hooks.prepare(body1, body2, contact, impulses[c], settings, knobs, dt);
+        const RigidBody& body1 = bodies[contact.body1];
+        const RigidBody& body2 = bodies[contact.body2];
+        hooks.prepare(body1, body2, contact, impulses_[c], settings, knobs, dt);
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             SoftPoint& sp = soft_points_[c * max_contact_points + i];
-            sp.mass = impulses[c].points[i].mass;
+            sp.mass = impulses_[c].points[i].mass;
             // The depth as detected: a speculative point's is negative (contacts, the chapter's
             // view, has it at 0), and aim() lets it approach by its gap; it does not bounce.
-            sp.depth = detected[order_[c]].points[i].penetration;
-            sp.bounce = settings.speculative_distance > 0.0 && sp.depth < 0.0 ? 0.0 : impulses[c].points[i].bounce;
-            sp.turn1 = cross(contact.points[i].position - body1.position, contact.normal);
-            sp.turn2 = cross(contact.points[i].position - body2.position, contact.normal);
+            sp.depth = detected[c].points[i].penetration;
+            sp.bounce = settings.speculative_distance > 0.0 && sp.depth < 0.0 ? 0.0 : impulses_[c].points[i].bounce;
+            sp.r1 = contact.points[i].position - body1.position;
+            sp.r2 = contact.points[i].position - body2.position;
         }
     }
 
@@ -545,16 +542,19 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     // the whole step and gave them gravity's whole kick; the substeps give both again, in
     // n shares. Their move is kept apart (shift, turn) and made at the end; detection's
     // points and lever arms stay where they were found. A body that woke after the move got
-    // neither, and starts where it stands. Every gathered body is a body of some contact.
+    // neither, and starts where it stands.
     const std::size_t count = bodies.size();
     shift_.assign(count, Vector3{});
     turn_.assign(count, Vector3{});
     touched_.assign(count, 0);
-    for (std::size_t b = 0; b < count; ++b) touched_[b] = bodies[b].is_immovable() ? 0 : 1;
+    for (const Contact& contact : contacts) {
+        touched_[contact.body1] = bodies[contact.body1].is_immovable() ? 0 : 1;
+        touched_[contact.body2] = bodies[contact.body2].is_immovable() ? 0 : 1;
+    }
     const Vector3 kick = gravity * dt;
     const Vector3 gravity_move = gravity * ((1.0 - gravity_position_factor) * dt * dt);
     for (std::size_t b = 0; b < count; ++b) {
-        if (touched_[b] == 0 || (!woken.empty() && woken[global_[b]] != 0)) continue;
+        if (touched_[b] == 0 || (!woken.empty() && woken[b] != 0)) continue;
         RigidBody& body = bodies[b];
         shift_[b] = -(body.velocity * dt - gravity_move);
         turn_[b] = -(body.angular_velocity * dt);
@@ -562,12 +562,12 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     }
 
     // The signed gap of a point now (< 0: overlap): detection's depth, changed by how far
-    // the two material points have moved along the normal since: a body's shift s and turn t
-    // move its point at r by s + t x r, whose share along n is s . n + t . (r x n).
+    // the two material points have moved along the normal since.
     auto gap = [&](const Contact& contact, std::size_t c, std::size_t i) {
         const SoftPoint& sp = soft_points_[c * max_contact_points + i];
-        const std::uint32_t b1 = pairs_[c][0], b2 = pairs_[c][1];
-        return -sp.depth + dot(shift_[b1] - shift_[b2], contact.normal) + dot(turn_[b1], sp.turn1) - dot(turn_[b2], sp.turn2);
+        const Vector3 move1 = shift_[contact.body1] + cross(turn_[contact.body1], sp.r1);
+        const Vector3 move2 = shift_[contact.body2] + cross(turn_[contact.body2], sp.r2);
+        return -sp.depth + dot(move1 - move2, contact.normal);
     };
     // Sets each point's mass and target for the chapter's solve_velocity: a point apart
     // may approach by its gap within the substep; an overlapping one is a soft contact that
@@ -576,7 +576,7 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     auto aim = [&](const Contact& contact, std::size_t c, bool push) {
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             const SoftPoint& sp = soft_points_[c * max_contact_points + i];
-            PointImpulse& p = impulses[c].points[i];
+            PointImpulse& p = impulses_[c].points[i];
             p.mass = sp.mass;
             p.bounce = 0.0;
             if (sp.mass == 0.0) continue;
@@ -593,11 +593,11 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
     auto pass = [&](bool push) {
         for (std::size_t c = 0; c < contacts.size(); ++c) {
             const Contact& contact = contacts[c];
-            RigidBody& body1 = bodies[pairs_[c][0]];
-            RigidBody& body2 = bodies[pairs_[c][1]];
+            RigidBody& body1 = bodies[contact.body1];
+            RigidBody& body2 = bodies[contact.body2];
             aim(contact, c, push);
-            hooks.solve_velocity(body1, body2, contact, impulses[c]);
-            if (with_friction) hooks.solve_friction(body1, body2, contact, impulses[c]);
+            hooks.solve_velocity(body1, body2, contact, impulses_[c]);
+            if (with_friction) hooks.solve_friction(body1, body2, contact, impulses_[c]);
         }
         ++report.velocity_passes;
     };
@@ -609,12 +609,10 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
         if (settings.warm_start || k > 0)
             for (std::size_t c = 0; c < contacts.size(); ++c) {
                 const Contact& contact = contacts[c];
-                RigidBody& body1 = bodies[pairs_[c][0]];
-                RigidBody& body2 = bodies[pairs_[c][1]];
                 if (with_friction && hooks.tangents != nullptr)
-                    warm_start_with_friction(body1, body2, contact, impulses[c], hooks.tangents);
+                    warm_start_with_friction(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c], hooks.tangents);
                 else
-                    hooks.warm_start(body1, body2, contact, impulses[c]);
+                    hooks.warm_start(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
             }
         pass(true);
         for (std::size_t b = 0; b < count; ++b) {
@@ -633,11 +631,11 @@ void ContactSolver::solve_in_substeps(std::span<RigidBody> bodies, std::span<con
         bool bounces = false;
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             const SoftPoint& sp = soft_points_[c * max_contact_points + i];
-            impulses[c].points[i].mass = sp.mass;
-            impulses[c].points[i].bounce = sp.bounce;
+            impulses_[c].points[i].mass = sp.mass;
+            impulses_[c].points[i].bounce = sp.bounce;
             bounces = bounces || sp.bounce > 0.0;
         }
-        if (bounces) hooks.solve_velocity(bodies[pairs_[c][0]], bodies[pairs_[c][1]], contact, impulses[c]);
+        if (bounces) hooks.solve_velocity(bodies[contact.body1], bodies[contact.body2], contact, impulses_[c]);
     }
 
     for (std::size_t b = 0; b < count; ++b) {

@@ -236,20 +236,19 @@ private:
         std::uint8_t point_count = 0;
     };
     /// What a substep needs of one contact point: the chapter's mass and bounce (restored
-    /// after the substeps change them), the depth found by detection, and r x n for each
-    /// body's lever arm r (how a turn of the body moves the point along the normal n).
+    /// after the substeps change them), the depth found by detection and the lever arms.
     struct SoftPoint {
         double mass = 0.0;
         double bounce = 0.0;
         double depth = 0.0;
-        Vector3 turn1{};
-        Vector3 turn2{};
+        Vector3 r1{};
+        Vector3 r2{};
     };
     /// \endcond
-    /// The step in substeps on the staged contacts and impulses (stage(), recall()) and the
-    /// gathered `bodies` (gather()); `detected`: the contacts as detection found them, in
-    /// detection's order (their depths, speculative ones negative).
-    void solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected, const ContactSolverHooks& hooks,
+    /// `detected`: the contacts as detection found them; `contacts`: the same as the chapter's
+    /// functions see them (speculative depths at 0).
+    void solve_in_substeps(std::span<RigidBody> bodies, std::span<const Contact> detected, std::span<const Contact> contacts,
+                           const ContactSolverHooks& hooks,
                            const ContactSolverSettings& settings, const PositionCorrection& knobs, double dt,
                            const Vector3& gravity, double gravity_position_factor, std::span<const std::uint8_t> woken,
                            ContactSolverReport& report);
@@ -259,8 +258,6 @@ private:
                 ContactSolverReport& report);
     /// Sets order_: the contacts from the bottom up along `up`.
     void order_passes(std::span<const Contact> contacts, const Vector3& up);
-    /// Sets order_: the `count` contacts in detection's order.
-    void in_detection_order(std::size_t count);
     /// Copies `contacts` in the order of the passes into staged_, as the chapter's functions
     /// see them (with speculative contacts, every depth at least 0), with rank_ and zero
     /// impulses in staged_impulses_ beside them.
@@ -294,10 +291,13 @@ private:
     std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
     std::vector<Vector3> saved_velocity_;
     std::vector<Vector3> saved_angular_velocity_;
-    std::vector<SoftPoint> soft_points_;  ///< max_contact_points per contact, in the passes' order
-    std::vector<Vector3> shift_;          ///< each gathered body's move since detection, within the substeps
-    std::vector<Vector3> turn_;           ///< each gathered body's turn since detection, within the substeps
+    std::vector<SoftPoint> soft_points_;  ///< max_contact_points per contact, in the contacts' order
+    std::vector<Vector3> shift_;          ///< each body's move since detection, within the substeps
+    std::vector<Vector3> turn_;           ///< each body's turn since detection, within the substeps
     std::vector<std::uint8_t> touched_;   ///< 1 for a movable body of some contact
+    /// With speculative contacts: the contacts as the chapter's functions see them (every
+    /// depth at least 0), in the contacts' order.
+    std::vector<Contact> seen_;
 };
 
 }  // namespace workbook
