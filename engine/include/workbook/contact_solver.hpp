@@ -78,10 +78,10 @@ struct ContactSolverSettings {
     /// takes the push back out exactly at a lone contact but not in a deep pile, where one
     /// pass over the contacts leaves part of every point's push in the velocities: kinetic
     /// energy that the next push adds to. In a block of discs started touching, at 12
-    /// substeps of 180 Hz, that leftover grows until the block collapses into itself; a
-    /// second pass takes enough of it back (tests/engine/contact_solver.cpp). Each pass adds
-    /// a quarter to the time of a step of the pile of 2,000 discs at 8 substeps; deeper piles at
-    /// stiffer settings need more (that pile at 12 substeps of 180 Hz still erupts with four).
+    /// substeps of 180 Hz without speculative contacts, that leftover grows until the block
+    /// collapses into itself; a second pass takes enough of it back, and so do speculative
+    /// contacts with one (tests/engine/contact_solver.cpp). Each pass adds about a quarter to
+    /// the time of a step of the bench's pile of discs.
     int relax_passes = 2;
     /// With substeps: the stiffness of a soft contact, Hz (at most a quarter of the substep
     /// rate, the highest a substep resolves). A contact then acts as a spring of that
