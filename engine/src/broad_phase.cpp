@@ -17,11 +17,19 @@ double bounding_radius(const RigidBody& body) {
 }
 
 void ProxySet::add_plane(const RigidBody& body, std::uint32_t index) {
-    GridProxy& p = proxies.emplace_back();
-    p.index = index;
-    p.movable = !body.is_immovable();
-    p.plane = true;
-    planes.push_back({index, p.movable, body.position, rotate(body.orientation, body.shape.normal)});
+    const bool movable = !body.is_immovable();
+    if (compact) {
+        CellProxy& p = cells.emplace_back();
+        p.index = index;
+        p.movable = movable;
+        p.plane = true;
+    } else {
+        GridProxy& p = proxies.emplace_back();
+        p.index = index;
+        p.movable = movable;
+        p.plane = true;
+    }
+    planes.push_back({index, movable, body.position, rotate(body.orientation, body.shape.normal)});
 }
 
 void BroadPhase::all_pairs(std::span<const RigidBody> bodies, std::vector<BodyPair>& pairs, bool immovable_pairs) {
@@ -61,6 +69,9 @@ bool is_fast(const ProxySet& set, const GridProxy& p) {
     return set.swept && p.movable && p.sphere && p.travel > set.fast_travel;
 }
 
+/// Whether body k of the set (in set order) is movable.
+bool movable(const ProxySet& set, std::size_t k) { return set.compact ? set.cells[k].movable : set.proxies[k].movable; }
+
 /// Whether the swept test traces a proxy as the grid keeps it (never one of a set without it).
 bool fast(const GridProxy& p) { return p.fast; }
 bool fast(const CellProxy&) { return false; }
@@ -80,7 +91,7 @@ void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, b
     // Room for one pair per body from the start (a resting pile has about one, the gas of
     // bench/ a few hundredths): the counts change from step to step, and growing only when a
     // new largest count comes would allocate now and then long after the scene warmed up.
-    const std::size_t count = set.proxies.size();
+    const std::size_t count = set.size();
     if (contact_keys_.capacity() < count) contact_keys_.reserve(count);
     if (pairs.capacity() < count) pairs.reserve(count);
     if (set.swept && sweep_pairs_.capacity() < 2 * count) {
@@ -93,7 +104,7 @@ void BroadPhase::find_pairs(const ProxySet& set, std::vector<BodyPair>& pairs, b
         // contact with it) exactly what it would have been.
         for (std::uint32_t i = 0; i < count; ++i)
             for (std::uint32_t j = i + 1; j < count; ++j)
-                if (immovable_pairs || set.proxies[i].movable || set.proxies[j].movable) pairs.push_back({i, j});
+                if (immovable_pairs || movable(set, i) || movable(set, j)) pairs.push_back({i, j});
         sweep_start_.clear();
         return;
     }
@@ -179,20 +190,25 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     const std::size_t cells = nx * ny * nz;
     if (cell_start_.capacity() < budget + 1) cell_start_.reserve(budget + 1);  // the most cells there can be
     cell_start_.assign(cells + 1, 0);
-    resize_with_room(cell_of_, set.proxies.size());
-    resize_with_room(slot_of_, set.proxies.size());
+    const std::size_t count = set.size();
+    resize_with_room(cell_of_, count);
+    resize_with_room(slot_of_, count);
     std::size_t in_grid = 0;
-    for (std::size_t k = 0; k < set.proxies.size(); ++k) {
-        const GridProxy& p = set.proxies[k];
-        if (p.plane) {
-            cell_of_[k] = not_in_grid;
-            continue;
+    const auto bin = [&](const auto& proxies) {
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto& p = proxies[k];
+            if (p.plane) {
+                cell_of_[k] = not_in_grid;
+                continue;
+            }
+            const std::uint64_t c = (axis_cell(p.z, lo[2], nz) * ny + axis_cell(p.y, lo[1], ny)) * nx + axis_cell(p.x, lo[0], nx);
+            cell_of_[k] = static_cast<std::uint32_t>(c);
+            ++cell_start_[c + 1];
+            ++in_grid;
         }
-        const std::uint64_t c = (axis_cell(p.z, lo[2], nz) * ny + axis_cell(p.y, lo[1], ny)) * nx + axis_cell(p.x, lo[0], nx);
-        cell_of_[k] = static_cast<std::uint32_t>(c);
-        ++cell_start_[c + 1];
-        ++in_grid;
-    }
+    };
+    if (set.compact) bin(set.cells);
+    else bin(set.proxies);
     for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
     // A set without the swept test needs only the compact copies (CellProxy).
     small_cells_ = !set.swept;
@@ -207,13 +223,17 @@ bool BroadPhase::build_grid(const ProxySet& set) {
     if (large_.capacity() < in_grid) large_.reserve(in_grid);
     if (wide_.capacity() < in_grid) wide_.reserve(in_grid);
     largest_reach_ = largest;
-    for (std::size_t k = 0; k < set.proxies.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
         if (cell_of_[k] == not_in_grid) continue;
         const std::uint32_t slot = cell_start_[cell_of_[k]]++;
         slot_of_[k] = slot;
+        if (set.compact) {  // gathered as the grid keeps it (a compact set has no swept test)
+            small_by_cell_[slot] = set.cells[k];
+            continue;
+        }
         const GridProxy& p = set.proxies[k];
         if (small_cells_) {
-            small_by_cell_[slot] = {p.x, p.y, p.z, p.radius, p.index, p.movable};
+            small_by_cell_[slot] = {p.x, p.y, p.z, p.radius, p.index, p.movable, false};
             continue;
         }
         by_cell_[slot] = with_fast_flag(set, p);
@@ -450,7 +470,8 @@ void BroadPhase::finish(const ProxySet& set, std::vector<BodyPair>& pairs, bool 
 }
 
 void BroadPhase::widen(ProxySet& set, std::uint32_t index, double radius) {
-    set.proxies[index].radius = std::max(set.proxies[index].radius, radius);
+    double& gathered = set.compact ? set.cells[index].radius : set.proxies[index].radius;
+    gathered = std::max(gathered, radius);
     if (!has_grid_ || cell_of_[index] == not_in_grid) return;
     const std::uint32_t slot = slot_of_[index];
     if (small_cells_) small_by_cell_[slot].radius = std::max(small_by_cell_[slot].radius, radius);
@@ -469,8 +490,12 @@ void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double 
     for (const PlaneProxy& plane : set.planes)
         if (dot(centre - plane.point, plane.normal) <= radius * (1.0 + tolerances::conservative_slack)) out.push_back(plane.index);
     if (!has_grid_) {
-        for (const GridProxy& q : set.proxies)
-            if (!q.plane && near(q)) out.push_back(q.index);
+        const auto every = [&](const auto& proxies) {
+            for (const auto& q : proxies)
+                if (!q.plane && near(q)) out.push_back(q.index);
+        };
+        if (set.compact) every(set.cells);
+        else every(set.proxies);
         return;
     }
     // Every proxy in the grid is at most largest_radius_ wide, so one within reach has its

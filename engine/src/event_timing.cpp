@@ -476,11 +476,6 @@ public:
         s.extra.clear();
         s.extra_head.assign(count_, no_extra);
         s.extra_nodes.clear();
-        s.dormant_nodes.clear();
-        if (boxes_) {
-            s.start_radius.resize(count_);
-            s.dormant_head.assign(count_, no_extra);
-        }
         // Room for one overlapping pair per body from the start, as the broad phase keeps for
         // its pairs, and for four times the last step's when that used half of it: a gas ends
         // most steps with none and a pile with about two per body, and growing only at a new
@@ -500,7 +495,7 @@ public:
         // Each body's bounding sphere widened by how far it can move this step at the velocity
         // it has: the pairs whose widened spheres overlap are the only ones that can meet. A
         // body that an impact sends further is searched again (outran()).
-        s.proxies.clear(count_);
+        s.proxies.clear(count_, true);  // compact copies: all the grid of widened spheres reads
         // Cells half as wide where they pay (ProxySet::fine_cells): the widened spheres of a pile
         // set cells that hold three bodies each, and a pair is found among fewer of them.
         s.proxies.fine_cells = true;
@@ -509,10 +504,7 @@ public:
             note(i, 0.0);
             s.reach[i].origin = body.position;
             s.reach[i].reach = can_move(i, dt_);
-            if (boxes_) {
-                s.reach[i].half_sides = box_half_sides(i, dt_);
-                s.start_radius[i] = s.state[i].bounding_radius + s.reach[i].reach;  // as ProxySet::add() widens it
-            }
+            if (boxes_) s.reach[i].half_sides = box_half_sides(i, dt_);
             s.proxies.add(body, i, 0.0, {}, s.reach[i].reach);
             if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
         }
@@ -650,14 +642,32 @@ public:
     /// every number is finite), taken in the same pass as the discrete step's integrate() takes
     /// it: at N = 100,000 a pass of its own over the bodies (328 bytes each) for check_finite()
     /// was 3% of the gas bench's whole profile.
+    ///
+    /// A movable body is advanced from its compact copy (EventBody), which holds its position
+    /// and velocity as they are (note() copied them after the loop's last change to it), with
+    /// advance()'s arithmetic, so the results are the same bit for bit; its kind and whether it
+    /// is movable come from its EventRole. The pass then reads of each body only the 104 bytes
+    /// from its position to its angular velocity (which the step writes, and poison() reads),
+    /// not its inverse mass at the front nor its shape at the back: at N = 100,000 the bodies
+    /// come from memory, and this leaves two of every body's five cache lines unread.
     double finish() {
         EventScratch& s = scratch_;
         s.ends.resize(count_);
         double sum = 0.0;
         for (std::uint32_t i = 0; i < count_; ++i) {
             RigidBody& body = bodies_[i];
-            advance(body, gravity_, k_, dt_ - s.state[i].since);  // the loop is over: nothing to note
-            s.ends[i] = {body.position, body.shape.kind == ShapeKind::sphere ? body.shape.radius : -1.0};
+            const EventBody& state = s.state[i];
+            const EventRole role = s.roles[i];
+            const double tau = dt_ - state.since;
+            if (role.immovable) {
+                advance(body, gravity_, k_, tau);  // a kinematic body, at its set velocity and spin
+            } else if (!(tau <= 0.0)) {  // as advance() tests it (a NaN goes on, and shows in poison())
+                body.position = state.position + (state.velocity * tau + gravity_ * (k_ * tau * tau));  // as advance()
+                body.velocity = state.velocity + gravity_ * tau;
+                if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
+            }
+            // The loop is over: nothing to note. A sphere's bounding radius is its radius.
+            s.ends[i] = {body.position, role.sphere ? state.bounding_radius : -1.0};
             sum += poison(body);
         }
         return sum;
@@ -953,8 +963,17 @@ private:
         return apart(p.x, q.x, p_half.x, q_half.x) || apart(p.y, q.y, p_half.y, q_half.y) || apart(p.z, q.z, p_half.z, q_half.z);
     }
 
-    /// Adds as candidates of body i every body whose widened sphere, as gathered at the start of
-    /// the step, comes within `radius` of i's centre then.
+    /// Adds as candidates of body i every body whose widened sphere, as the broad phase has it
+    /// now (gathered at the start of the step, or widened since), comes within `radius` of i's
+    /// centre then, and whose box meets i's.
+    ///
+    /// A body found here whose box is apart from i's is not kept anywhere: if either box widens
+    /// later, that body searches again and finds the other. Its search is never narrower than
+    /// the sphere it has in the broad phase (search_again() widens it there first), and the
+    /// other's sphere there is never narrower than the one it searched with here, so the same
+    /// test on the same or larger numbers holds (the sums and the comparison round the same
+    /// way). Lists of such pairs by body, walked when a box widened, found nothing that search
+    /// did not.
     void add_near(std::uint32_t i, double radius) {
         EventScratch& s = scratch_;
         s.near.clear();
@@ -962,7 +981,6 @@ private:
         for (const std::uint32_t j : s.near) {
             if (j == i || (s.roles[i].immovable && s.roles[j].immovable)) continue;
             if (!boxes_apart(i, j)) add_candidate(i, j);
-            else if (!found_at_start(i, j)) link(i, j, s.dormant_head, s.dormant_nodes);
         }
     }
 
@@ -985,56 +1003,28 @@ private:
             // Later searches of other bodies find this one by its new reach (BroadPhase::widen()).
             s.broad_phase.widen(s.proxies, i, s.state[i].bounding_radius + reach.reach);
         }
-        const bool widened = widen_box(i, t);
-        // The sphere's search finds again the pairs the broad phase left dormant; those that a
-        // partner found in a search of its own, from further off, are in its dormant list.
+        widen_box(i, t);
+        // The search finds again the pairs the broad phase left out for their boxes, and those
+        // that earlier searches (of this body or of others) left out for theirs (add_near()).
         add_near(i, s.state[i].bounding_radius + reach.reach);
-        if (widened) wake_dormant(i);
-    }
-
-    /// True when the broad phase at the start of the step found bodies i and j (its test, on
-    /// the same numbers): a search of either's widened sphere, never narrower than then, finds
-    /// the other again, so the pair needs no dormant entry.
-    [[nodiscard]] bool found_at_start(std::uint32_t i, std::uint32_t j) const {
-        const EventScratch& s = scratch_;
-        const Vector3& p = s.reach[i].origin;
-        const Vector3& q = s.reach[j].origin;
-        const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-        const double radii = s.start_radius[i] + s.start_radius[j];
-        return dx * dx + dy * dy + dz * dz <= radii * radii * (1.0 + tolerances::conservative_slack);
-    }
-
-    /// Makes candidates of body i's dormant partners (found in searches, boxes apart) whose
-    /// boxes now meet its own.
-    void wake_dormant(std::uint32_t i) {
-        EventScratch& s = scratch_;
-        const auto wake = [&](std::uint32_t j) {
-            if (!boxes_apart(i, j)) add_candidate(i, j);
-        };
-        for (std::uint32_t n = s.dormant_head[i]; n != no_extra; n = s.dormant_nodes[n].next) wake(s.dormant_nodes[n].partner);
     }
 
     /// Widens each side of body i's box that it may now leave to its widened sphere (or a tenth
-    /// more than it needs, when rounding puts that beyond), and returns whether it widened any:
-    /// a side left once is not left again before the sphere is, so a body whose impacts turn it
-    /// searches at most three times more per step than with spheres alone, and the sides it
-    /// does not leave stay narrow.
-    bool widen_box(std::uint32_t i, double t) {
-        if (!boxes_) return false;
+    /// more than it needs, when rounding puts that beyond): a side left once is not left again
+    /// before the sphere is, so a body whose impacts turn it searches at most three times more
+    /// per step than with spheres alone, and the sides it does not leave stay narrow.
+    void widen_box(std::uint32_t i, double t) {
+        if (!boxes_) return;
         EventReach& reach = scratch_.reach[i];
         Vector3& half_sides = reach.half_sides;
         const Vector3 needs = needs_reach_along_axes(i, t);
         const double radius = scratch_.state[i].bounding_radius;
-        bool widened = false;
         const auto widen = [&](double need, double& half) {
-            if (!(need + radius > half)) return;
-            half = radius + std::max(reach.reach, 1.1 * need);
-            widened = true;
+            if (need + radius > half) half = radius + std::max(reach.reach, 1.1 * need);
         };
         widen(needs.x, half_sides.x);
         widen(needs.y, half_sides.y);
         widen(needs.z, half_sides.z);
-        return widened;
     }
 
     std::span<RigidBody> bodies_;
