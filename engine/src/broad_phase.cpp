@@ -481,7 +481,7 @@ void BroadPhase::widen(ProxySet& set, std::uint32_t index, double radius) {
 }
 
 void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double radius,
-                             std::vector<std::uint32_t>& out) const {
+                             std::vector<std::uint32_t>& out, const Vector3& box) const {
     const auto near = [&](const auto& q) {
         const double within = (radius + q.radius) * (1.0 + tolerances::conservative_slack);
         const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
@@ -506,11 +506,16 @@ void BroadPhase::bodies_near(const ProxySet& set, const Vector3& centre, double 
     // centre's cell: for a reach of about a cell that is 27 to 64 cells instead of 125.
     const double c[3] = {centre.x, centre.y, centre.z};
     const double far = (radius + largest_radius_) * (1.0 + tolerances::conservative_slack) * (1.0 + tolerances::conservative_slack);
+    // The caller's box, with the same room for rounding, where it is narrower (std::min keeps
+    // `far` for a NaN side).
+    const double box_half[3] = {box.x, box.y, box.z};
     std::uint64_t from[3], to[3];
     for (int axis = 0; axis < 3; ++axis) {
+        const double half =
+            std::min(far, box_half[axis] * (1.0 + tolerances::conservative_slack) * (1.0 + tolerances::conservative_slack));
         // The range of cells in doubles first: a centre outside the grid has a negative index.
-        const double lo = std::floor((c[axis] - far - low_[axis]) * inverse_cell_);
-        const double hi = std::floor((c[axis] + far - low_[axis]) * inverse_cell_);
+        const double lo = std::floor((c[axis] - half - low_[axis]) * inverse_cell_);
+        const double hi = std::floor((c[axis] + half - low_[axis]) * inverse_cell_);
         const double last = static_cast<double>(cells_[axis] - 1);
         if (!(hi >= 0.0 && lo <= last)) return;  // (also for a NaN centre)
         from[axis] = static_cast<std::uint64_t>(std::clamp(lo, 0.0, last));

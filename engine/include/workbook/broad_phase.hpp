@@ -229,7 +229,18 @@ public:
     /// of the set whose bounding sphere (as gathered) comes within `radius` of `centre`, and
     /// of every plane within `radius` of it; conservative by a relative 1e-9. Visits only the
     /// cells near `centre` when there is a grid, every body otherwise.
-    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out) const;
+    ///
+    /// `box` (half its sides along each axis, m) narrows the search where the caller keeps
+    /// only bodies whose centres lie within a box about `centre`: bodies whose centres lie
+    /// outside it may then be left out (the grid visits only the cells both the box and the
+    /// sphere's reach cover; no body inside both is left out). An infinite or NaN side narrows
+    /// nothing along its axis.
+    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out,
+                     const Vector3& box = unbounded) const;
+
+    /// bodies_near()'s box when the caller asks for none: every side infinite.
+    static constexpr Vector3 unbounded{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity()};
 
     /// After a find_pairs() of `set`: body `index` of the set (in set order, not a plane) now
     /// reaches `radius` from its centre, more than when it was gathered; later bodies_near()
