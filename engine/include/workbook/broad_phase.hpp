@@ -232,9 +232,9 @@ public:
     ///
     /// `box` (half its sides along each axis, m) narrows the search where the caller keeps
     /// only bodies whose centres lie within a box about `centre`: bodies whose centres lie
-    /// outside it may then be left out (the grid visits only the cells both the box and the
-    /// sphere's reach cover; no body inside both is left out). An infinite or NaN side narrows
-    /// nothing along its axis.
+    /// outside it by more than rounding are left out, and the grid visits only the cells both
+    /// the box and the sphere's reach cover (no body inside both is left out). An infinite or
+    /// NaN side narrows nothing along its axis.
     void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out,
                      const Vector3& box = unbounded) const;
 
