@@ -3,6 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -150,6 +151,74 @@ TEST_CASE("bodies_near() finds with the grid exactly the bodies and planes a tes
         found += near.size();
     }
     CHECK(found > 3000);  // the queries did find bodies, not only empty answers
+}
+
+TEST_CASE("a compact set finds the pairs and the bodies near that a full one finds; a box leaves out exactly the "
+          "bodies outside it",
+          "[broad_phase][event]") {
+    // Event timing gathers its widened spheres as compact copies (ProxySet::cells), and its
+    // search again passes a box outside which it keeps no body (BroadPhase::bodies_near()).
+    const std::vector<RigidBody> bodies = crowd(workbook::testing::run_seed() + 21, 1500);
+    SeededRandom random(workbook::testing::run_seed() + 22);
+    ProxySet full;
+    ProxySet compact;
+    full.clear(bodies.size());
+    compact.clear(bodies.size(), true);
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        const double inflate = random.uniform(0.0, 0.1);
+        full.add(bodies[i], i, 0.0, {}, inflate);
+        compact.add(bodies[i], i, 0.0, {}, inflate);
+    }
+    full.fine_cells = compact.fine_cells = true;
+    REQUIRE(compact.proxies.empty());
+    REQUIRE(compact.size() == full.size());
+    BroadPhase full_grid;
+    BroadPhase compact_grid;
+    std::vector<BodyPair> full_pairs;
+    std::vector<BodyPair> compact_pairs;
+    full_grid.find_pairs(full, full_pairs);
+    compact_grid.find_pairs(compact, compact_pairs);
+    REQUIRE(compact_grid.has_grid());
+    REQUIRE(full_pairs.size() > bodies.size() / 4);
+    const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
+    REQUIRE(std::equal(full_pairs.begin(), full_pairs.end(), compact_pairs.begin(), compact_pairs.end(), same));
+    constexpr double slack = 1.0 + tolerances::conservative_slack;
+    std::vector<std::uint32_t> near;
+    std::vector<std::uint32_t> near_full;
+    std::vector<std::uint32_t> expected;
+    std::size_t found = 0;
+    for (int query = 0; query < 300; ++query) {
+        const Vector3 centre{random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0), random.uniform(-3.0, 3.0)};
+        const double radius = random.uniform(0.0, 1.3);
+        // Half the queries with a box, each side from a tenth of the radius to past it.
+        const bool boxed = query % 2 == 0;
+        const Vector3 box = boxed ? Vector3{random.uniform(0.1, 1.5) * radius, random.uniform(0.1, 1.5) * radius,
+                                            random.uniform(0.1, 1.5) * radius}
+                                  : BroadPhase::unbounded;
+        near.clear();
+        near_full.clear();
+        compact_grid.bodies_near(compact, centre, radius, near, box);
+        full_grid.bodies_near(full, centre, radius, near_full, box);
+        expected.clear();
+        for (const CellProxy& q : compact.cells) {
+            if (q.plane) continue;
+            const double within = (radius + q.radius) * slack;
+            const double dx = q.x - centre.x, dy = q.y - centre.y, dz = q.z - centre.z;
+            const bool inside = std::abs(dx) <= box.x * slack * slack && std::abs(dy) <= box.y * slack * slack &&
+                                std::abs(dz) <= box.z * slack * slack;
+            if (dx * dx + dy * dy + dz * dz <= within * within && inside) expected.push_back(q.index);
+        }
+        for (const PlaneProxy& plane : compact.planes)
+            if (dot(centre - plane.point, plane.normal) <= radius * slack) expected.push_back(plane.index);
+        std::sort(near.begin(), near.end());
+        std::sort(near_full.begin(), near_full.end());
+        std::sort(expected.begin(), expected.end());
+        CAPTURE(query, boxed, centre.x, centre.y, centre.z, radius);
+        REQUIRE(near == expected);
+        REQUIRE(near_full == expected);
+        found += near.size();
+    }
+    CHECK(found > 1000);  // the queries did find bodies, not only empty answers
 }
 
 TEST_CASE("fine cells find the pairs and the bodies near that whole cells find", "[broad_phase][event]") {

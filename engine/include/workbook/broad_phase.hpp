@@ -54,6 +54,7 @@ struct CellProxy {
     double radius = 0.0;      ///< bounding radius, m
     std::uint32_t index = 0;  ///< body index
     bool movable = false;     ///< false for an immovable body
+    bool plane = false;       ///< a plane, in a compact set's list (ProxySet::cells); never in the grid
 };
 
 /// A plane as the broad phase reads it.
@@ -70,7 +71,14 @@ inline bool plane_before(const PlaneProxy& plane, std::uint32_t index) { return 
 
 /// The body proxies of one step, in body order, and what the broad phase should look for.
 struct ProxySet {
-    std::vector<GridProxy> proxies;   ///< every body, in body order
+    std::vector<GridProxy> proxies;   ///< every body, in body order (empty for a compact set)
+    /// For a compact set: every body, in body order, as the 40-byte copies the grid of a set
+    /// without the swept test keeps (CellProxy), rather than as 72-byte GridProxy copies whose
+    /// travel, start and flags only the swept test reads. Event timing gathers every body so
+    /// at the start of each step: at N = 100,000 the larger copies were 7 MB written and read
+    /// twice more by the grid, every step, from memory.
+    std::vector<CellProxy> cells;
+    bool compact = false;             ///< the bodies are in `cells`, not `proxies` (set by clear())
     std::vector<PlaneProxy> planes;   ///< the planes again, in body order, with their normals
     /// Also find the pairs the swept test must try: pairs with a fast sphere (travel greater than
     /// `fast_travel`) whose paths may come within touching distance.
@@ -92,10 +100,14 @@ struct ProxySet {
     double travel_sum = 0.0;          ///< sum over spheres of min(travel, 4 radii), m
     std::size_t spheres = 0;          ///< spheres
 
-    /// Starts a new gathering for `count` bodies.
-    void clear(std::size_t count) {
+    /// Starts a new gathering for `count` bodies; a `compact_copies` set keeps them in `cells`
+    /// and can have no swept test.
+    void clear(std::size_t count, bool compact_copies = false) {
         proxies.clear();
-        if (proxies.capacity() < count) proxies.reserve(count);
+        cells.clear();
+        compact = compact_copies;
+        if (compact && cells.capacity() < count) cells.reserve(count);
+        if (!compact && proxies.capacity() < count) proxies.reserve(count);
         planes.clear();
         swept = false;
         fine_cells = false;
@@ -110,12 +122,19 @@ struct ProxySet {
         spheres = 0;
     }
 
+    /// How many bodies have been gathered.
+    [[nodiscard]] std::size_t size() const { return compact ? cells.size() : proxies.size(); }
+
     /// Appends body `index` (the next one in body order), with the travel and start of a swept
     /// sphere; `inflate` widens its bounding sphere (event timing's reach over a step).
     void add(const RigidBody& body, std::uint32_t index, double travel = 0.0, const Vector3& start = {},
              double inflate = 0.0) {
         if (body.shape.kind == ShapeKind::plane) {
             add_plane(body, index);
+            return;
+        }
+        if (compact) {
+            add_compact(body, index, inflate);
             return;
         }
         GridProxy p;
@@ -143,6 +162,24 @@ struct ProxySet {
 
 private:
     void add_plane(const RigidBody& body, std::uint32_t index);
+
+    /// add() for a compact set: the same numbers, kept as a CellProxy.
+    void add_compact(const RigidBody& body, std::uint32_t index, double inflate) {
+        CellProxy& p = cells.emplace_back();
+        p.x = body.position.x;
+        p.y = body.position.y;
+        p.z = body.position.z;
+        const bool sphere = body.shape.kind == ShapeKind::sphere;
+        p.radius = (sphere ? body.shape.radius : bounding_radius(body)) + inflate;
+        p.index = index;
+        p.movable = !body.is_immovable();
+        ++bounded;
+        if (sphere) ++spheres;  // (a compact set has no travel to sum)
+        poison += (p.x + p.y + p.z + p.radius) * 0.0;
+        low.x = std::min(low.x, p.x), low.y = std::min(low.y, p.y), low.z = std::min(low.z, p.z);
+        high.x = std::max(high.x, p.x), high.y = std::max(high.y, p.y), high.z = std::max(high.z, p.z);
+        largest_radius = std::max(largest_radius, p.radius);
+    }
 };
 
 /// A uniform grid over the bodies' bounding spheres, rebuilt every step.
@@ -192,7 +229,18 @@ public:
     /// of the set whose bounding sphere (as gathered) comes within `radius` of `centre`, and
     /// of every plane within `radius` of it; conservative by a relative 1e-9. Visits only the
     /// cells near `centre` when there is a grid, every body otherwise.
-    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out) const;
+    ///
+    /// `box` (half its sides along each axis, m) narrows the search where the caller keeps
+    /// only bodies whose centres lie within a box about `centre`: bodies whose centres lie
+    /// outside it by more than rounding are left out, and the grid visits only the cells both
+    /// the box and the sphere's reach cover (no body inside both is left out). An infinite or
+    /// NaN side narrows nothing along its axis.
+    void bodies_near(const ProxySet& set, const Vector3& centre, double radius, std::vector<std::uint32_t>& out,
+                     const Vector3& box = unbounded) const;
+
+    /// bodies_near()'s box when the caller asks for none: every side infinite.
+    static constexpr Vector3 unbounded{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity()};
 
     /// After a find_pairs() of `set`: body `index` of the set (in set order, not a plane) now
     /// reaches `radius` from its centre, more than when it was gathered; later bodies_near()

@@ -108,10 +108,6 @@ struct EventScratch {
     std::vector<EventRole> roles;          ///< per body: what kind of body it is for the loop
     std::vector<Vector3> normals;          ///< per body: a plane's unit normal in the world (unset for other shapes)
     std::vector<EventReach> reach;         ///< per body: where it started the step, how far it may get
-    /// Per body, when the step uses boxes: the radius of its widened sphere as the broad phase
-    /// had it at the start of the step, m, to tell the pairs it found (dense, 8 bytes a body,
-    /// rather than read from the 72-byte proxies).
-    std::vector<double> start_radius;
     /// Whether the next step uses boxes: they cost a pass over the bodies and one over the
     /// broad phase's pairs, and pay only where they leave out many pairs. A step with boxes
     /// that leaves out fewer than half of them turns them off for 15 steps (steps_without_boxes).
@@ -132,11 +128,6 @@ struct EventScratch {
         std::uint32_t next;     ///< the body's next node, or none
     };
     std::vector<ExtraNode> extra_nodes;    ///< the nodes of every body's list of later candidates
-    /// Pairs whose widened spheres meet but whose boxes (EventReach::half_sides) were apart
-    /// when they were found: no candidates until a box of theirs widens to meet the other's.
-    /// In lists by body, as the later candidates: dormant_head[i] is body i's first node.
-    std::vector<std::uint32_t> dormant_head;
-    std::vector<ExtraNode> dormant_nodes;  ///< the nodes of every body's list of dormant partners
     std::vector<std::uint32_t> near;       ///< bodies_near()'s answer
     std::vector<std::uint32_t> moving_planes;  ///< the kinematic planes that move or turn this step
     /// Per body at the end of the step: a sphere's centre and radius (radius -1 for other shapes).
