@@ -82,6 +82,17 @@ struct PileKnobs {
     double speculative_distance = ContactSolverSettings{}.speculative_distance;  ///< m (0: off)
 };
 
+/// The workbook's other scheme on the pile: the soft step (ContactSolverSettings::substeps) at
+/// the stiffest contact springs 16 substeps resolve (240 Hz) with one relax pass, the setting
+/// docs/performance.md measures beside the defaults; `workbook-pile workbook-soft N` runs it.
+inline PileKnobs soft_step_knobs() {
+    PileKnobs knobs;
+    knobs.substeps = 16;
+    knobs.hertz = 240.0;
+    knobs.relax_passes = 1;
+    return knobs;
+}
+
 /// Runs the pile in the workbook with chapter 5's responder (the reference solution).
 PileResult run_pile_workbook(const Pile& pile, int steps, const PileKnobs& knobs = {}, double budget = unlimited);
 

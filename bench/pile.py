@@ -20,7 +20,10 @@ cell reads "skipped: over budget"; so is every larger N of that engine, and any 
 even a linear growth from the engine's last result would take more than the budget, which is
 then not started. With --record it also copies the table, the CSV and the SVG into
 bench/results/; --rewrite runs nothing and writes the table and the figure again from a run's
-CSV. --quick is the small run the tests make (16 and 100 discs, 3 s).
+CSV. --quick is the small run the tests make (16 and 100 discs, 3 s). `--engines` picks engines;
+it may also name workbook-soft, the workbook's other scheme (the soft step of chapter 5's page,
+16 substeps of 240 Hz with one relax pass), run like the workbook to the largest N and drawn
+dashed; the goals stay those of the workbook on its defaults.
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread);
 with --repeat R each is the fastest of R runs (the state at the end is the same every run).
@@ -37,6 +40,14 @@ import sys
 from pathlib import Path
 
 from bench.speed import ENGINES, RESULTS, STYLE, STYLES, TITLES, load_average, machine, three_digits
+
+# The workbook's soft step (`workbook-pile workbook-soft`, bench/pile.hpp's soft_step_knobs()): an
+# engine of this bench only, run when --engines names it, beside the solver's defaults.
+SOFT = "workbook-soft"
+ENGINES_HERE = ENGINES + [SOFT]
+TITLES = TITLES | {SOFT: "workbook, soft step"}
+STYLES = STYLES | {SOFT: 11}  # the workbook's colour; drawn dashed (SOFT_DASH)
+SOFT_DASH = " dt 2"
 
 SIZES = [400, 1000, 2000, 5000, 10000, 20000, 50000, 100000]
 PEERS_UP_TO = 10000
@@ -88,7 +99,7 @@ def measure(binary, engines, sizes, seconds, budget, repeat, peers_up_to):
         for engine in engines:
             row = {column: "" for column in COLUMNS} | {"engine": engine, "n": n, "steps": steps}
             rows.append(row)
-            if engine != "workbook" and n > peers_up_to:
+            if engine not in ("workbook", SOFT) and n > peers_up_to:
                 row["status"] = "not run"
                 continue
             if engine in over:
@@ -223,9 +234,11 @@ def figure(rows, figures, engines, seconds):
             continue
         skipped = [f"{r['n']:,}" for r in rows if r["engine"] == e and r["status"] in (OVER_BUDGET, "failed")]
         title = TITLES[e] + (f" (over budget from N = {skipped[0]})" if skipped else "")
-        blocks += [f"${e} << EOD", *[f"{r['n']},{r['ms_per_step']},{float(r['deepest_m']) * 1e3:.6g}" for r in points], "EOD"]
-        times.append(f"${e} using 1:2 with linespoints ls {STYLES[e]} pt 7 ps 0.8 title '{title}'")
-        depths.append(f"${e} using 1:($3 > 0.1 ? $3 : 0.1) with linespoints ls {STYLES[e]} pt 7 ps 0.8 notitle")
+        block = "$" + e.replace("-", "_")  # a gnuplot data block's name has no '-'
+        blocks += [f"{block} << EOD", *[f"{r['n']},{r['ms_per_step']},{float(r['deepest_m']) * 1e3:.6g}" for r in points], "EOD"]
+        dash = SOFT_DASH if e == SOFT else ""
+        times.append(f"{block} using 1:2 with linespoints ls {STYLES[e]}{dash} pt 7 ps 0.8 title '{title}'")
+        depths.append(f"{block} using 1:($3 > 0.1 ? $3 : 0.1) with linespoints ls {STYLES[e]}{dash} pt 7 ps 0.8 notitle")
     measured = [r for e in engines for r in done(rows, e)]
     if not measured:
         print("bench: no engine produced a result, so there is no figure (the table says why)", file=sys.stderr)
@@ -237,7 +250,8 @@ def figure(rows, figures, engines, seconds):
               "set xlabel 'N / discs' font label_font"]
     body = "\n".join([
         "set multiplot layout 1,2 title "
-        f"'A pile of N frictionless discs dropped into a box, {seconds:g} s: every engine on its defaults' font title_font",
+        f"'A pile of N frictionless discs dropped into a box, {seconds:g} s: every engine on its defaults"
+        f"{', and the workbook' + chr(39) * 2 + 's soft step' if SOFT in engines else ''}' font title_font",
         *common, "set format y '10^{%T}'", f"set yrange [{min(t) / 2:g}:{max(t) * 30:g}]",  # room above the lines for the key
         "set ylabel 'time per step / ms' font label_font",
         "set key inside top left vertical Left reverse font note_font",
@@ -282,7 +296,7 @@ def main():
     if args.rewrite:
         with open(args.out / "pile.csv", newline="") as f:
             rows = [{**r, "n": int(r["n"])} for r in csv.DictReader(f)]
-        engines = [e for e in ENGINES if any(r["engine"] == e for r in rows)]
+        engines = [e for e in ENGINES_HERE if any(r["engine"] == e for r in rows)]
         sizes = sorted({r["n"] for r in rows})
         measured = (args.out / "pile.md").read_text().splitlines()[0]
         seconds = int(rows[0]["steps"]) / 60

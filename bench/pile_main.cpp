@@ -2,7 +2,8 @@
 //               [swept 0/1] [tolerance] [substeps] [contact hertz]
 //               [sleeping 0/1] [relax passes] [shock sweeps] [shock slope] [speculative distance] [--budget SECONDS]
 // runs the pile of pile.hpp in one engine (workbook, the default, chipmunk, box2d or bullet; the
-// knobs after `seconds` are the workbook's) and prints one CSV line:
+// knobs after `seconds` are the workbook's), or in the workbook's soft step (workbook-soft:
+// soft_step_knobs(), no knobs), and prints one CSV line:
 //   engine,N,ms_per_step,deepest_m,kinetic_J,mean_height_m,outside
 // or, when the steps took more than --budget seconds of processor time and were stopped,
 //   engine,N,over budget,,,,
@@ -53,22 +54,23 @@ int main(int argc, char** argv) {
         args.erase(args.begin());
     }
     if (args.empty()) {
-        std::fprintf(stderr, "usage: workbook-pile [workbook|chipmunk|box2d|bullet] N [seconds] [velocity_iterations] "
+        std::fprintf(stderr, "usage: workbook-pile [workbook|workbook-soft|chipmunk|box2d|bullet] N [seconds] [velocity_iterations] "
                              "[position_iterations] [warm_start] [fraction] [slop] [swept] [tolerance] [substeps] [hertz] [sleeping] [relax passes] [shock sweeps] [shock slope] [speculative distance] [--budget SECONDS]\n");
         return 2;
     }
-    if (engine != "workbook" && peer(engine) == nullptr) {
+    const bool soft = engine == "workbook-soft";
+    if (engine != "workbook" && !soft && peer(engine) == nullptr) {
         std::fprintf(stderr, "engine '%s' is unknown or was not built (its Debian package missing)\n", engine.c_str());
         return 2;
     }
     if (engine != "workbook" && args.size() > 2) {
-        std::fprintf(stderr, "the knobs after `seconds` are the workbook's; %s runs on its own defaults\n", engine.c_str());
+        std::fprintf(stderr, "the knobs after `seconds` are the workbook's; %s runs on its own settings\n", engine.c_str());
         return 2;
     }
     try {
         const auto count = static_cast<std::uint32_t>(std::stoul(args[0]));
         const double seconds = args.size() > 1 ? std::stod(args[1]) : 10.0;
-        PileKnobs knobs;
+        PileKnobs knobs = soft ? soft_step_knobs() : PileKnobs{};
         if (args.size() > 2) knobs.velocity_iterations = std::stoi(args[2]);
         if (args.size() > 3) knobs.position_iterations = std::stoi(args[3]);
         if (args.size() > 4) knobs.warm_start = std::stoi(args[4]) != 0;
@@ -85,7 +87,7 @@ int main(int argc, char** argv) {
         if (args.size() > 15) knobs.speculative_distance = std::stod(args[15]);
         const Pile pile = make_pile(count);
         const int steps = static_cast<int>(seconds / Pile::time_step + 0.5);
-        const PileResult r = engine == "workbook" ? run_pile_workbook(pile, steps, knobs, budget) : peer(engine)(pile, steps, budget);
+        const PileResult r = engine == "workbook" || soft ? run_pile_workbook(pile, steps, knobs, budget) : peer(engine)(pile, steps, budget);
         if (r.over_budget)
             std::printf("%s,%u,over budget,,,,\n", engine.c_str(), count);
         else
