@@ -103,6 +103,20 @@ def main():
         if sorted({r["engine"] for r in rows}) != ["workbook-soft"] or len(rows) != 2:
             failures.append(f"--engines workbook-soft gave rows {[(r['engine'], r['n']) for r in rows]}")
         check_rows(rows, table, failures)
+        # Its goals, in a table of their own after the defaults' (which ran nothing here).
+        heading = "| goal for the workbook's soft step | | measured |"
+        soft_goals = table.split(heading, 1)[1] if heading in table else ""
+        if not soft_goals:
+            failures.append(f"pile.md lacks the soft step's goals ('{heading}')")
+        expected = {
+            "deepest overlap at the end <= 5 mm at every N": all(float(r["deepest_m"]) <= 0.005 for r in rows),
+            "kinetic energy at the end <= 1e-6 J per disc at every N":
+                all(float(r["kinetic_J"]) <= 1e-6 * int(r["n"]) for r in rows),
+            "no disc outside the box at any N": all(r["outside"] == "0" for r in rows),
+        }
+        for goal, met in expected.items():
+            if soft_goals and f"| {goal} | {'met' if met else 'not met'} |" not in soft_goals:
+                failures.append(f"pile.md does not say the soft step's goal '{goal}' is {'met' if met else 'not met'}")
 
         # A budget (1 microsecond) far below what the steps take: the run is stopped, and the larger N not started.
         rows, table = run_bench(args.binary, out / "budget", "--engines", "workbook", "--sizes", "100,400",
