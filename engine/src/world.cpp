@@ -56,6 +56,14 @@ void World::step() {
         keep_answered_impacts();       // the impacts of 1 join the contacts and the energy probe
     } else {
         integrate();  // 1. gravity, then positions and orientations
+        skipped_ = at_rest_ && !moved_;
+        if (skipped_) {
+            // Everything asleep where the last step found it: nothing to detect or solve.
+            ++steps_;
+            time_ += settings_.time_step;
+            return;
+        }
+        at_rest_ = !moved_;
         detect();     // 2. overlapping pairs, and the swept test of fast spheres
         if (model_.contact_solver != nullptr) {
             solve_contacts();  // 3 and 4 together: every contact of the step, solved at once
@@ -142,16 +150,19 @@ double World::integrate_bodies(bool gather, bool swept) {
     }
     double smallest_radius = std::numeric_limits<double>::infinity();
     double sum = 0.0;
+    bool moved = false;
     for (std::uint32_t i = 0; i < count; ++i) {
         RigidBody& body = bodies_[i];
         if (body.is_immovable()) {
             // Kinematic bodies move at their own constant velocity and spin; gravity and
             // contacts never change them (immovable ones have neither, and stay put).
+            moved = moved || body.velocity != Vector3{} || body.angular_velocity != Vector3{};
             advance_kinematic(body, dt);
         } else if (sleeping_.asleep(i) && body.velocity == Vector3{} && body.angular_velocity == Vector3{}) {
             // A sleeping body stays where it is, at rest (workbook/sleeping.hpp); one that a
             // tool or test has given a velocity (through bodies()) wakes, and its island with it.
         } else {
+            moved = true;
             sleeping_.wake(i);
             if (semi_implicit) {
                 if (gravity) body.velocity += gravity_kick;
@@ -172,6 +183,7 @@ double World::integrate_bodies(bool gather, bool swept) {
         proxies_.swept = true;
         proxies_.fast_travel = smallest_radius;
     }
+    moved_ = moved;
     return sum;
 }
 

@@ -92,8 +92,24 @@ void check_contact_laws(const RigidBody& body1, const RigidBody& body2, const Co
     CHECK_THAT(length(contact.normal), WithinAbs(1.0, 8 * eps));
     REQUIRE(contact.point_count >= 1);
     REQUIRE(contact.point_count <= max_contact_points);
-    if (body2.shape.kind != ShapeKind::plane)
-        CHECK_THAT(contact.penetration, WithinAbs(std::max(shadow_overlap(body1, body2, contact.normal), 0.0), tolerance));
+    if (body2.shape.kind != ShapeKind::plane) {
+        // A sphere whose centre lies outside the box takes as normal the direction from the
+        // box's nearest point to its centre: a difference of two nearly equal points when the
+        // centre is near the surface, whose direction holds only to about eps L / d (L the
+        // size of the coordinates, d the centre's distance from the box). The shadows along
+        // that normal move by the shapes' reach times that; the depth itself, r - d, does not.
+        double normal_error = 0.0;
+        if (body1.shape.kind == ShapeKind::sphere && body2.shape.kind == ShapeKind::box) {
+            const double outside = body1.shape.radius - contact.penetration;
+            const double coordinates = length(body1.position) + length(body2.position) + length(body2.shape.half_extents);
+            if (outside > 0.0) {
+                const double reach = length(body2.shape.half_extents) + length(body1.position - body2.position);
+                normal_error = 8 * eps * coordinates / outside * reach;
+            }
+        }
+        CHECK_THAT(contact.penetration,
+                   WithinAbs(std::max(shadow_overlap(body1, body2, contact.normal), 0.0), tolerance + normal_error));
+    }
     for (std::size_t i = 0; i < contact.point_count; ++i) {
         const ContactPoint& point = contact.points[i];
         CAPTURE(i, point.position, point.penetration, contact.normal);

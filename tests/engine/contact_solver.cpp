@@ -126,6 +126,69 @@ TEST_CASE("A resting column falls asleep: exactly at rest, its contacts no longe
     CHECK(world.sleeping().sleeping() == 0);
 }
 
+TEST_CASE("A world whose every body sleeps costs nothing: it skips detection and solve, and ends as if it had not",
+          "[engine][contact-solver][sleeping]") {
+    // Two copies of the same column; the second's bodies are handed out before every step,
+    // which makes it detect and solve afresh, as every step did before the skip existed.
+    World skipping = column(5, {});
+    World full = column(5, {});
+    int steps = 0;
+    for (; steps < 240 && !skipping.at_rest(); ++steps) {
+        skipping.step();
+        (void)full.bodies();
+        full.step();
+    }
+    REQUIRE(skipping.at_rest());
+    REQUIRE(skipping.sleeping().sleeping() == 5);
+    CHECK(!full.at_rest());  // bodies() handed out: it looked again
+    for (int i = 0; i < 120; ++i) {
+        skipping.step();
+        CHECK(skipping.at_rest());
+        (void)full.bodies();
+        full.step();
+    }
+    const std::span<const RigidBody> a = std::as_const(skipping).bodies(), b = std::as_const(full).bodies();
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        CHECK(a[k].position == b[k].position);
+        CHECK(a[k].velocity == b[k].velocity);
+        CHECK(a[k].orientation == b[k].orientation);
+    }
+    REQUIRE(skipping.contacts().size() == full.contacts().size());
+    for (std::size_t c = 0; c < skipping.contacts().size(); ++c) {
+        CHECK(skipping.contacts()[c].body1 == full.contacts()[c].body1);
+        CHECK(skipping.contacts()[c].body2 == full.contacts()[c].body2);
+        CHECK(skipping.contacts()[c].penetration == full.contacts()[c].penetration);
+    }
+    CHECK(skipping.steps_taken() == full.steps_taken());
+    CHECK(skipping.time() == full.time());
+    // A velocity given from outside wakes the top ball: the step moves it and looks again.
+    skipping.bodies()[4].velocity = {0, 1.8, 0};
+    skipping.step();
+    CHECK(!skipping.at_rest());
+    CHECK(!skipping.sleeping().asleep(4));
+}
+
+TEST_CASE("A kinematic body that moves keeps a sleeping world looking: it is never at rest", "[engine][contact-solver][sleeping]") {
+    std::vector<RigidBody> bodies;
+    bodies.push_back(make_sphere(1.0, 0.05, {0, 0.05, 0}));
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    RigidBody pusher = make_immovable_sphere(0.05, {-3, 0.05, 0});
+    pusher.velocity = {1, 0, 0};  // reaches the ball after about 2.8 s
+    bodies.push_back(pusher);
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.contact_solver = {};
+    World world(std::move(bodies), settings, model);
+    bool slept = false;
+    for (int i = 0; i < 150; ++i) {
+        world.step();
+        slept = slept || world.sleeping().asleep(0);
+        CHECK(!world.at_rest());
+    }
+    REQUIRE(slept);
+    for (int i = 0; i < 60; ++i) world.step();
+    CHECK(std::as_const(world).bodies()[0].position.x > 0.0);  // pushed: the pusher's contact was found
+}
+
 TEST_CASE("Sleeping off (ContactSolverSettings::sleeping): no body sleeps", "[engine][contact-solver][sleeping]") {
     World world = column(5, {.sleeping = false});
     for (int i = 0; i < 120; ++i) world.step();

@@ -8,7 +8,9 @@
 /// two). When every body of an island has moved slower than `sleep_speed` for `sleep_time`,
 /// the island falls asleep: its velocities become exactly zero, and integration and the
 /// contact solver skip its bodies and their contacts. Detection still runs over them, so
-/// that a moving body that touches one of them wakes its whole island in the same step.
+/// that a moving body that touches one of them wakes its whole island in the same step;
+/// once every body sleeps and nothing else moves, World::step() skips detection too
+/// (World::at_rest()).
 /// What sleeping changes: a sleeping body stands exactly still instead of creeping by
 /// rounding (or jittering, in a pile whose passes did not converge); its kinetic energy is 0.
 

@@ -166,8 +166,13 @@ public:
     [[nodiscard]] std::span<RigidBody> bodies() {
         proxies_fresh_ = false;
         impacts_fresh_ = false;
+        at_rest_ = false;
         return bodies_;
     }
+    /// True when the last step() found nothing to move (every movable body asleep, no
+    /// kinematic body moving) where the step before had left it: it then detected and solved
+    /// nothing, since both would have found what they found before.
+    [[nodiscard]] bool at_rest() const { return skipped_; }
     /// The contacts found by the last detect(); under event timing, after the impacts the
     /// step answered at their moment.
     [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
@@ -232,6 +237,15 @@ private:
     ProxySet proxies_;
     /// True from an integrate() that gathered proxies_ to the detect() that uses them.
     bool proxies_fresh_ = false;
+    /// Whether the last integrate_bodies() moved anything: an awake body, or a kinematic one
+    /// with a velocity or spin.
+    bool moved_ = true;
+    /// Set by a step in which nothing moved (every movable body asleep): its detection and
+    /// solve were done at the positions the bodies still hold, so until something moves or
+    /// bodies() hands them out, a step would find the same contacts and solve none of them,
+    /// and step() skips both. Asleep islands then cost nothing.
+    bool at_rest_ = false;
+    bool skipped_ = false;  ///< the last step() skipped detection and solve (at_rest())
     SweepScratch sweep_scratch_;
     EventScratch event_scratch_;
     /// What the last integrate_impact_to_impact() left for the rest of the step.
