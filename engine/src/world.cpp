@@ -482,7 +482,8 @@ std::vector<StageUse> World::plan() const {
         const ContactSolverSettings& solver = settings_.contact_solver;
         char still[32];
         std::snprintf(still, sizeof still, "%g", solver.sleep_time);
-        const std::string sleeping = solver.sleeping ? std::string("; islands still for ") + still + " s sleep until touched"
+        const std::string sleeping = solver.sleeping ? std::string("; islands still for ") + still +
+                                                           " s sleep until touched, and a step with every body asleep detects and solves nothing"
                                                      : std::string("; sleeping off");
         const std::string passes =
             solver.substeps > 0 ? "in " + std::to_string(solver.substeps) + " substeps of soft contacts (a push and " +

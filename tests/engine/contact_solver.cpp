@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -161,6 +162,11 @@ TEST_CASE("A world whose every body sleeps costs nothing: it skips detection and
     }
     CHECK(skipping.steps_taken() == full.steps_taken());
     CHECK(skipping.time() == full.time());
+    // The scene's plan says so.
+    bool told = false;
+    for (const StageUse& stage : skipping.plan())
+        told = told || (stage.stage == "solve contacts" && stage.why.find("every body asleep detects and solves nothing") != std::string::npos);
+    CHECK(told);
     // A velocity given from outside wakes the top ball: the step moves it and looks again.
     skipping.bodies()[4].velocity = {0, 1.8, 0};
     skipping.step();
