@@ -591,6 +591,6 @@ TEST_CASE("Speculative contacts reach as far as a ball travels: a dropped column
     const double without = deepest_while_landing(60, 120, false);
     const double with = deepest_while_landing(60, 120, true);
     INFO("without the travels " << without << " m, with them " << with << " m");
-    CHECK(without > 0.05);
+    CHECK(without > 0.09);  // nearly a diameter, as chapter 5's page says
     CHECK(with <= 1e-12);
 }
