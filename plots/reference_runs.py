@@ -223,7 +223,7 @@ def check(sim, sanitized=False):
     for problem in problems:
         print("reference-runs:", problem)
     if problems:
-        print("Write them again with: python3 plots/reference_runs.py write --sim build/dev/tools/workbook-sim")
+        print("Write them again with: python3 -m plots.reference_runs write --sim build/dev/tools/workbook-sim")
     return 1 if problems else 0
 
 

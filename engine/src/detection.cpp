@@ -105,14 +105,17 @@ bool overlaps(const RigidBody& a, const RigidBody& b) {
     return false;
 }
 
-bool within_margin(const RigidBody& a, const RigidBody& b, double margin) {
+bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b) {
     switch (pair_of(a.shape.kind, b.shape.kind)) {
         case ShapePair::sphere_sphere:
-            return spheres_overlap(a.position, a.shape.radius + margin, b.position, b.shape.radius);
+            return spheres_overlap(a.position, a.shape.radius + speculative_reach(distance, travel_a, travel_b), b.position,
+                                   b.shape.radius);
         case ShapePair::sphere_plane: {
+            // A plane stays where it is: a sphere that the solve stops goes back at most to
+            // where it started the step, which was clear of the plane, so only the distance.
             const RigidBody& sphere = a.shape.kind == ShapeKind::sphere ? a : b;
             const RigidBody& plane = a.shape.kind == ShapeKind::sphere ? b : a;
-            return sphere_plane_overlap(sphere.position, sphere.shape.radius + margin, plane.position,
+            return sphere_plane_overlap(sphere.position, sphere.shape.radius + distance, plane.position,
                                         rotate(plane.orientation, plane.shape.normal));
         }
         case ShapePair::sphere_box:

@@ -30,15 +30,7 @@ World::World(std::vector<RigidBody> bodies, WorldSettings settings, ResponseMode
     // the swept test's data when it will run), so that the first step does not pay for growing
     // them, nor for the system's first touch of their memory (about 20 MB at N = 100,000).
     if (uses_grid()) {
-        const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
-        const auto count = static_cast<std::uint32_t>(bodies_.size());
-        const double dt = settings_.time_step;
-        const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
-        double smallest_radius = std::numeric_limits<double>::infinity();
-        proxies_.clear(count);
-        for (std::uint32_t i = 0; i < count; ++i) gather_body(i, swept, dt, gravity_term, smallest_radius);
-        proxies_.swept = swept;
-        proxies_.fast_travel = smallest_radius;
+        gather_proxies();
         proxies_.margin = contact_margin();
         // Not for bodies at non-finite positions: every pair would be listed.
         if (proxies_.poison == 0.0) broad_phase_.find_pairs(proxies_, pairs_, !shortcuts_.skip_immovable_pairs);
@@ -248,9 +240,18 @@ void World::detect() {
 }
 
 void World::gather_proxies() {
+    // As integrate() gathers them, with the swept test's starts and travels: the travels also
+    // reach speculative contacts (speculative_reach()), which must not depend on which pass
+    // gathered the proxies.
+    const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
     const auto count = static_cast<std::uint32_t>(bodies_.size());
+    const double dt = settings_.time_step;
+    const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+    double smallest_radius = std::numeric_limits<double>::infinity();
     proxies_.clear(count);
-    for (std::uint32_t i = 0; i < count; ++i) proxies_.add(bodies_[i], i);
+    for (std::uint32_t i = 0; i < count; ++i) gather_body(i, swept, dt, gravity_term, smallest_radius);
+    proxies_.swept = swept;
+    proxies_.fast_travel = smallest_radius;
 }
 
 void World::find_contacts(bool gathered) {
@@ -278,11 +279,18 @@ double World::contact_margin() const {
                : 0.0;
 }
 
+double World::travel_in_step(const RigidBody& body) const {
+    if (!(settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres)) return 0.0;
+    const double dt = settings_.time_step;
+    const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+    return length(body.position - start_of_step(body, dt, gravity_term));  // as gather_body() has it
+}
+
 void World::add_contact_if_any(std::uint32_t i, std::uint32_t j) {
     const RigidBody& a = bodies_[i];
     const RigidBody& b = bodies_[j];
     const double margin = contact_margin();
-    if (!overlaps(a, b) && !(margin > 0.0 && within_margin(a, b, margin))) return;
+    if (!overlaps(a, b) && !(margin > 0.0 && within_margin(a, b, margin, travel_in_step(a), travel_in_step(b)))) return;
     // Two immovable bodies never get a contact: nothing could answer it.
     if (a.is_immovable() && b.is_immovable()) return;
     // The slot is reserved first so the contact is written in place; a box pair that the full
@@ -294,13 +302,13 @@ void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
     // Spheres and planes are tested and written from the proxies, which hold the same numbers
     // as the bodies in 72 contiguous bytes: the pairs' bodies are not read at all (at
     // N = 100,000 each read of a body missed every cache). Boxes take the bodies' path.
-    // Within the margin of speculative contacts (0 without them: the overlap test).
+    // Within the reach of speculative contacts (0 without them: the overlap test).
     const GridProxy& a = proxies_.proxies[i];
     const GridProxy& b = proxies_.proxies[j];
     const double margin = proxies_.margin;
     if (a.sphere && b.sphere) {
         const Vector3 centre1{a.x, a.y, a.z}, centre2{b.x, b.y, b.z};
-        if (!spheres_overlap(centre1, a.radius + margin, centre2, b.radius)) return;
+        if (!spheres_overlap(centre1, a.radius + speculative_reach(margin, a.travel, b.travel), centre2, b.radius)) return;
         // Two immovable bodies never get a contact: nothing could answer it.
         if (!a.movable && !b.movable) return;
         Contact& contact = contacts_.emplace_back();

@@ -134,6 +134,10 @@ struct ContactSolverSettings {
     /// step at 60 Hz. A larger distance catches more and costs more pairs (in a packed pile
     /// of discs, up to a quarter of a diameter adds only the six nearest neighbours). 2 cm is
     /// the gap between the rows the bench's pile starts in, and did as well there as 5 cm.
+    /// Two spheres also reach as far as both travelled in the step (speculative_reach(),
+    /// with the swept test on): the solve may stop a sphere that still moves at its own
+    /// speed while the sphere behind it keeps going, as at the top of a column that is
+    /// landing, which closes their gap by that speed times the step, whatever the distance.
     double speculative_distance = 0.02;
 };
 

@@ -42,11 +42,23 @@ bool sphere_plane_overlap(const Vector3& centre, double radius, const Vector3& p
 /// See sphere_plane_overlap(); the sphere is body 1.
 void write_sphere_plane(const Vector3& centre, double radius, const Vector3& point, const Vector3& normal, Contact& contact);
 
-/// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres, or
-/// a sphere and a plane, are apart by less than `margin` (or overlap); write_contact() then
-/// writes their contact, with a negative depth (the gap) when they are apart. False for a
-/// pair with a box, which gets no speculative points.
-bool within_margin(const RigidBody& a, const RigidBody& b, double margin);
+/// How far apart two spheres may be and still get a speculative contact, m: the solver's
+/// speculative `distance` (ContactSolverSettings::speculative_distance; 0 for none, and then
+/// 0) plus how far each sphere travelled in the step (`travel1`, `travel2`; 0 without the
+/// swept test). The solve may stop a sphere that is still moving at its own speed, and so
+/// close its gap to a neighbour that keeps going by up to that speed times the step: two
+/// balls falling one above the other 2 cm apart at 3 m/s, the lower one stopped by what it
+/// lands on, end the step 3 cm into each other unless their pair is solved with the rest.
+inline double speculative_reach(double distance, double travel1, double travel2) {
+    return distance > 0.0 ? distance + travel1 + travel2 : 0.0;
+}
+
+/// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres are
+/// apart by less than speculative_reach(distance, travel_a, travel_b), or a sphere and a plane
+/// by less than `distance` (or overlap); write_contact() then writes their contact, with a
+/// negative depth (the gap) when they are apart. False for a pair with a box, which gets no
+/// speculative points.
+bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
 
 /// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
 /// Contact; same result as collide(). Returns false when the pair does not touch after all:

@@ -131,7 +131,8 @@ public:
     /// broad phase's proxies in the same pass, for the detect() that follows.
     void integrate();
     /// Stage 2: fills contacts() with every overlapping pair (and, with speculative contacts,
-    /// every sphere and plane pair within ContactSolverSettings::speculative_distance), then (discrete timing, swept
+    /// every sphere and plane pair within ContactSolverSettings::speculative_distance, two
+    /// spheres also within what they travelled: speculative_reach()), then (discrete timing, swept
     /// spheres on) traces each fast sphere along its path (swept_spheres.hpp). Right after
     /// integrate_impact_to_impact(), only the pairs whose bodies came near each other are tried.
     void detect();
@@ -225,8 +226,12 @@ private:
     /// Stages 3 and 4; each returns 0 when the bodies it changed are finite, NaN otherwise.
     double respond_contacts();
     double correct_contacts();
-    /// Fills proxies_ from the bodies as they stand (no swept test).
+    /// Fills proxies_ from the bodies as they stand, as integrate() would have (with the swept
+    /// test's starts and travels when it runs).
     void gather_proxies();
+    /// How far `body` moved in the step, m, as gather_body() gives it to its proxy; 0 when the
+    /// swept test is off (then no proxy has a travel either).
+    [[nodiscard]] double travel_in_step(const RigidBody& body) const;
     /// Appends body i to proxies_, with its start and travel when `swept` (see integrate_bodies()).
     void gather_body(std::uint32_t i, bool swept, double dt, const Vector3& gravity_term, double& smallest_radius);
 
