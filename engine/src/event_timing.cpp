@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -17,9 +18,34 @@
 #include "workbook/response_model.hpp"
 #include "workbook/world.hpp"  // Integrator
 
-namespace workbook {
+/// Asks the caches for the line holding `address`, to be read soon; nothing where the compiler
+/// has no such hint (standard C++ has none, MSVC's differs). A hint only: no result depends on it.
+#if defined(__GNUC__) || defined(__clang__)
+#define WORKBOOK_PREFETCH(address) __builtin_prefetch(address)
+#else
+#define WORKBOOK_PREFETCH(address) static_cast<void>(address)
+#endif
 
+namespace workbook {
 namespace {
+
+/// Asks the caches for the `bytes` bytes from `from` on, every line of 64 bytes they touch.
+inline void ask_caches_for(const void* from, std::size_t bytes) {
+    const auto* first = static_cast<const char*>(from);
+    for (std::size_t offset = 0; offset < bytes; offset += 64) WORKBOOK_PREFETCH(first + offset);
+    WORKBOOK_PREFETCH(first + bytes - 1);
+}
+
+/// How many bodies ahead the two passes over every body (EventLoop::start() and finish()) ask
+/// the caches for the body they will read. At N = 100,000 the bodies (328 bytes each) come
+/// from memory in both passes, and the processor's own prefetching, which a stride of 328
+/// bytes and several arrays read side by side leave behind, kept them waiting: asked 16
+/// bodies ahead, the pile's first pass's copies went from 3.1 to 2.7 ms a step and the pass
+/// to the end of the step from 2.7 to 2.0 ms (4 ahead did half of that, 32 no more).
+constexpr std::uint32_t pass_lookahead = 16;
+
+/// What finish() reads and writes of a body: from its position to the end of its angular velocity.
+constexpr std::size_t moved_bytes = offsetof(RigidBody, angular_velocity) + sizeof(Vector3) - offsetof(RigidBody, position);
 
 /// Gaps within this share of the scene's length scale count as touching (tolerances.hpp).
 constexpr double touching_tolerance = tolerances::touching;
@@ -500,6 +526,7 @@ public:
         // set cells that hold three bodies each, and a pair is found among fewer of them.
         s.proxies.fine_cells = true;
         for (std::uint32_t i = 0; i < count_; ++i) {
+            if (i + pass_lookahead < count_) ask_caches_for(&bodies_[i + pass_lookahead], sizeof(RigidBody));
             const RigidBody& body = bodies_[i];
             note(i, 0.0);
             s.reach[i].origin = body.position;
@@ -658,6 +685,10 @@ public:
         s.ends.resize(count_);
         double sum = 0.0;
         for (std::uint32_t i = 0; i < count_; ++i) {
+            if (i + pass_lookahead < count_) {
+                ask_caches_for(&bodies_[i + pass_lookahead].position, moved_bytes);
+                WORKBOOK_PREFETCH(&s.state[i + pass_lookahead]);
+            }
             RigidBody& body = bodies_[i];
             const EventBody& state = s.state[i];
             const EventRole role = s.roles[i];
