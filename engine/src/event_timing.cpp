@@ -36,12 +36,13 @@ inline void ask_caches_for(const void* from, std::size_t bytes) {
     WORKBOOK_PREFETCH(first + bytes - 1);
 }
 
-/// How many bodies ahead the two passes over every body (EventLoop::start() and finish()) ask
-/// the caches for the body they will read. At N = 100,000 the bodies (328 bytes each) come
-/// from memory in both passes, and the processor's own prefetching, which a stride of 328
-/// bytes and several arrays read side by side leave behind, kept them waiting: asked 16
-/// bodies ahead, the pile's first pass's copies went from 3.1 to 2.7 ms a step and the pass
-/// to the end of the step from 2.7 to 2.0 ms (4 ahead did half of that, 32 no more).
+/// How many bodies ahead, in the order they go, the two passes over every body
+/// (EventLoop::start() and finish()) ask the caches for the body they will read. At N =
+/// 100,000 the bodies (328 bytes each) come from memory in both passes, and the processor's
+/// own prefetching, which a stride of 328 bytes and several arrays read side by side leave
+/// behind, kept them waiting: asked 16 bodies ahead, the pile's first pass's copies went from
+/// 3.1 to 2.7 ms a step and the pass to the end of the step from 2.7 to 2.0 ms (4 ahead did
+/// half of that, 32 no more).
 constexpr std::uint32_t pass_lookahead = 16;
 
 /// What finish() reads and writes of a body: from its position to the end of its angular velocity.
@@ -680,14 +681,19 @@ public:
     /// from its position to its angular velocity (which the step writes, and poison() reads),
     /// not its inverse mass at the front nor its shape at the back: at N = 100,000 the bodies
     /// come from memory, and this leaves two of every body's five cache lines unread.
+    ///
+    /// The pass goes from the last body to the first, so that it ends where what follows it
+    /// starts: overlapping_pairs(), the discrete stages (whose pairs come in index order) and
+    /// the next step's first pass (body after body) find the first bodies, and their ends,
+    /// still in the cache. Each body's result is its own, and the sum is 0 or NaN in any order.
     double finish() {
         EventScratch& s = scratch_;
         s.ends.resize(count_);
         double sum = 0.0;
-        for (std::uint32_t i = 0; i < count_; ++i) {
-            if (i + pass_lookahead < count_) {
-                ask_caches_for(&bodies_[i + pass_lookahead].position, moved_bytes);
-                WORKBOOK_PREFETCH(&s.state[i + pass_lookahead]);
+        for (std::uint32_t i = count_; i-- > 0;) {
+            if (i >= pass_lookahead) {
+                ask_caches_for(&bodies_[i - pass_lookahead].position, moved_bytes);
+                WORKBOOK_PREFETCH(&s.state[i - pass_lookahead]);
             }
             RigidBody& body = bodies_[i];
             const EventBody& state = s.state[i];
