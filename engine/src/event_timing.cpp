@@ -41,8 +41,8 @@ inline void ask_caches_for(const void* from, std::size_t bytes) {
 /// 100,000 the bodies (328 bytes each) come from memory in both passes, and the processor's
 /// own prefetching, which a stride of 328 bytes and several arrays read side by side leave
 /// behind, kept them waiting: asked 16 bodies ahead, the pile's first pass's copies went from
-/// 3.1 to 2.7 ms a step and the pass to the end of the step from 2.7 to 2.0 ms (4 ahead did
-/// half of that, 32 no more).
+/// about 3.1 to 2.6 ms a step and the pass to the end of the step from 2.7 to 2.0 ms (4 ahead
+/// did half of that, 32 no more).
 constexpr std::uint32_t pass_lookahead = 16;
 
 /// What finish() reads and writes of a body: from its position to the end of its angular velocity.
