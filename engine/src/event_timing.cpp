@@ -898,13 +898,22 @@ private:
         return x < static_cast<double>(slice_count_ - 1) ? static_cast<std::uint32_t>(x) : slice_count_ - 1;
     }
 
-    /// Moves the next slice's events into the (used up) run, sorted earliest first.
+    /// Moves the next slice's events into the (used up) run, sorted earliest first. The slice's
+    /// list holds them newest first; turned round, in the order they were queued, they are
+    /// mostly in order already, and are sorted only when they are not. In the bench's pile the
+    /// slices that hold more than one event are about a dozen a step, each the impacts of one
+    /// moment (thousands at N = 100,000), queued by the events before them in the order of their
+    /// bodies: all but one in 400 were in order, and sorting them was 2% of the step. (Events
+    /// that Earlier leaves in no order are of the same pair at the same moment: those predicted
+    /// with other event counts than the one that holds are stale, the rest are the same event,
+    /// so their order changes nothing.)
     void open_slice() {
         EventScratch& s = scratch_;
         s.run.clear();
         s.run_next = 0;
         for (std::uint32_t n = s.slice_head[opened_]; n != no_node; n = s.pending[n].next) s.run.push_back(s.pending[n].event);
-        std::sort(s.run.begin(), s.run.end(), Earlier{});
+        std::reverse(s.run.begin(), s.run.end());
+        if (!std::is_sorted(s.run.begin(), s.run.end(), Earlier{})) std::sort(s.run.begin(), s.run.end(), Earlier{});
         longest_run_ = std::max(longest_run_, s.run.size());
         ++opened_;
     }
