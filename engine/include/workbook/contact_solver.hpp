@@ -107,7 +107,7 @@ struct ContactSolverSettings {
     /// (docs/performance.md): alone it settles a packed block of discs that the passes leave
     /// moving, but not the pile dropped into its box, whose landing puts discs deep into
     /// each other before any contact exists; with speculative contacts (below) one sweep
-    /// holds the pile's overlap within 5 mm from 400 to 10,000 discs.
+    /// holds the pile's overlap within 5 mm from 400 to 20,000 discs.
     int shock_sweeps = 1;
     /// With shock_sweeps: the sine of the smallest lean of a contact's normal out of the
     /// horizontal for its lower body to count as immovable.
