@@ -337,12 +337,13 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
     } else {
         // Without a swept set every travel is 0 and no sphere is fast, and pair() comes down to
         // its second test (the first, wider by a relative slack, passes whenever it does):
-        // that test alone, as event timing's widened spheres and worlds without the swept test
-        // ask. Over the compact copies, which hold all it reads.
+        // that test alone, within the margin of speculative contacts (0 under event timing), as
+        // event timing's widened spheres and worlds without the swept test ask. Over the compact
+        // copies, which hold all it reads.
         walk(small_by_cell_.data(), [&](const CellProxy& p, const CellProxy& q) {
             const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
             const double d2 = dx * dx + dy * dy + dz * dz;
-            const double radii = p.radius + q.radius;
+            const double radii = p.radius + q.radius + margin;
             if (d2 <= radii * radii * (1.0 + tolerances::conservative_slack) && (immovable_pairs || p.movable || q.movable)) {
                 const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
                 contact_keys_.push_back(a << 32 | b);

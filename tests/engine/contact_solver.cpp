@@ -594,3 +594,32 @@ TEST_CASE("Speculative contacts reach as far as a ball travels: a dropped column
     CHECK(without > 0.09);  // nearly a diameter, as chapter 5's page says
     CHECK(with <= 1e-12);
 }
+
+TEST_CASE("Speculative contacts: the grid finds the pairs a test of every pair finds, with the swept test on or off",
+          "[engine][contact-solver][speculative]") {
+    // Twenty balls in a row 1 cm apart (within the speculative distance of 2 cm), the odd ones
+    // moving: enough bodies for the grid, whose walk must count the distance (and, with the
+    // swept test, the travels) as the narrow phase does.
+    for (const bool swept : {false, true}) {
+        std::vector<RigidBody> bodies;
+        for (int i = 0; i < 20; ++i) {
+            bodies.push_back(make_sphere(1.0, 0.05, {0.11 * i, 0, 0}));
+            if (i % 2 == 1) bodies.back().velocity = {0, 0.9, 0};
+        }
+        WorldSettings settings{1.0 / 60, {}};
+        settings.swept_spheres = swept;
+        World grid(bodies, settings, model);
+        World every_pair(bodies, settings, model);
+        every_pair.set_shortcuts({.broad_phase = false});
+        grid.step();
+        every_pair.step();
+        INFO("swept test " << (swept ? "on" : "off"));
+        CHECK(grid.used_broad_phase());
+        REQUIRE(grid.contacts().size() == every_pair.contacts().size());
+        CHECK(grid.contacts().size() >= 19);  // every neighbour pair, and with travels more
+        for (std::size_t c = 0; c < grid.contacts().size(); ++c) {
+            CHECK(grid.contacts()[c].body1 == every_pair.contacts()[c].body1);
+            CHECK(grid.contacts()[c].body2 == every_pair.contacts()[c].body2);
+        }
+    }
+}
