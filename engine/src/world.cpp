@@ -125,7 +125,7 @@ void World::integrate() {
     // bodies (328 bytes each) fit in no cache, and a separate pass cost as much as the grid.
     const bool discrete = settings_.contact_timing == ContactTiming::discrete;
     const bool grid = discrete && uses_grid();
-    const double poison = integrate_bodies(grid, grid && settings_.swept_spheres);
+    const double poison = integrate_bodies(grid, grid && sweeps_spheres());
     proxies_fresh_ = grid;
     if (!(poison == 0.0)) guard("integrate");
 }
@@ -136,7 +136,7 @@ double World::integrate_bodies(bool gather, bool swept) {
     const bool gravity = has_gravity(settings_, shortcuts_);
     const bool semi_implicit = settings_.integrator == Integrator::semi_implicit_euler;
     const auto count = static_cast<std::uint32_t>(bodies_.size());
-    const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+    const Vector3 gravity_term = start_gravity_term();
     if (gather) {
         proxies_.clear(count);
     }
@@ -226,10 +226,10 @@ void World::detect() {
     // The proxies integrate() gathered, unless the bodies may have changed since.
     find_contacts(proxies_fresh_);
     proxies_fresh_ = false;
-    const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
+    const bool swept = sweeps_spheres();
     if (swept) {
         const double dt = settings_.time_step;
-        const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+        const Vector3 gravity_term = start_gravity_term();
         SweepGrid grid;
         if (used_broad_phase_ && broad_phase_.has_grid() && proxies_.swept) grid = {&proxies_, &broad_phase_};
         sweep_fast_spheres(bodies_, dt, gravity_term, grid, contacts_, sweep_scratch_);
@@ -243,10 +243,10 @@ void World::gather_proxies() {
     // As integrate() gathers them, with the swept test's starts and travels: the travels also
     // reach speculative contacts (speculative_reach()), which must not depend on which pass
     // gathered the proxies.
-    const bool swept = settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
+    const bool swept = sweeps_spheres();
     const auto count = static_cast<std::uint32_t>(bodies_.size());
     const double dt = settings_.time_step;
-    const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+    const Vector3 gravity_term = start_gravity_term();
     double smallest_radius = std::numeric_limits<double>::infinity();
     proxies_.clear(count);
     for (std::uint32_t i = 0; i < count; ++i) gather_body(i, swept, dt, gravity_term, smallest_radius);
@@ -279,10 +279,19 @@ double World::contact_margin() const {
                : 0.0;
 }
 
-double World::travel_in_step(const RigidBody& body) const {
-    if (!(settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres)) return 0.0;
+bool World::sweeps_spheres() const {
+    return settings_.contact_timing == ContactTiming::discrete && settings_.swept_spheres;
+}
+
+Vector3 World::start_gravity_term() const {
     const double dt = settings_.time_step;
-    const Vector3 gravity_term = settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+    return settings_.gravity * ((1.0 - gravity_position_factor(settings_.integrator)) * dt * dt);
+}
+
+double World::travel_in_step(const RigidBody& body) const {
+    if (!sweeps_spheres()) return 0.0;
+    const double dt = settings_.time_step;
+    const Vector3 gravity_term = start_gravity_term();
     return length(body.position - start_of_step(body, dt, gravity_term));  // as gather_body() has it
 }
 

@@ -229,6 +229,11 @@ private:
     /// Fills proxies_ from the bodies as they stand, as integrate() would have (with the swept
     /// test's starts and travels when it runs).
     void gather_proxies();
+    /// True when detect() runs the swept test (discrete timing, WorldSettings::swept_spheres).
+    [[nodiscard]] bool sweeps_spheres() const;
+    /// What start_of_step() (swept_spheres.hpp) takes back of gravity's move over a step,
+    /// g c dt^2, for this world's integrator.
+    [[nodiscard]] Vector3 start_gravity_term() const;
     /// How far `body` moved in the step, m, as gather_body() gives it to its proxy; 0 when the
     /// swept test is off (then no proxy has a travel either).
     [[nodiscard]] double travel_in_step(const RigidBody& body) const;
