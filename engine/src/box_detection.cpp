@@ -162,10 +162,11 @@ struct Separation {
 /// Face-face contact: `reference` owns the face whose outward normal is `outward` (unit, along
 /// one of its axes, index `face_axis`); the face of `incident` turned most against it is
 /// clipped to the reference face's sides, and the clipped corners behind the face, or on it to
-/// within `touching`, are kept.
+/// within `touching`, are kept; so are those in front of it by less than `reach` (speculative
+/// points, their depth the gap, negative).
 void clip_incident_face(const OrientedBox& reference, int face_axis, const Vector3& outward,
                         const OrientedBox& incident, const Vector3& normal, double merge_distance, double touching,
-                        Contact& out) {
+                        double reach, Contact& out) {
     const auto f = static_cast<std::size_t>(face_axis);
     const Vector3 face_centre = reference.centre + outward * reference.half[f];
     const double face_offset = dot(face_centre, outward);
@@ -198,12 +199,16 @@ void clip_incident_face(const OrientedBox& reference, int face_axis, const Vecto
         const double depth = face_offset - dot(polygon.vertex[i], outward);
         if (depth > -touching)
             candidates.add(polygon.vertex[i] + outward * (depth / 2.0), std::max(depth, 0.0), merge_distance);
+        else if (depth > -reach)
+            candidates.add(polygon.vertex[i] + outward * (depth / 2.0), depth, merge_distance);
     }
     keep_four(candidates, normal, merge_distance, out);
 }
 
 /// Edge-edge contact: one point halfway between the closest points of the two supporting edges.
-void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& s, Contact& out) {
+/// Edges apart by less than `touching` touch (depth 0); farther apart (a speculative point)
+/// the depth is the gap along the normal, negative.
+void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& s, double touching, Contact& out) {
     const auto ia = static_cast<std::size_t>(s.index_a);
     const auto ib = static_cast<std::size_t>(s.index_b);
     // The edge of a parallel to its axis ia that reaches furthest towards b (along -normal),
@@ -224,7 +229,7 @@ void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& 
     const double rb = dot(db, r);
     const double p = std::clamp((cosine * rb - ra) / denominator, -a.half[ia], a.half[ia]);
     const double q = std::clamp(rb + p * cosine, -b.half[ib], b.half[ib]);
-    out.add_point((on_a + da * p + on_b + db * q) * 0.5, std::max(s.overlap, 0.0));  // touching edges: depth 0
+    out.add_point((on_a + da * p + on_b + db * q) * 0.5, s.overlap > -touching ? std::max(s.overlap, 0.0) : s.overlap);
 }
 
 /// Below this length a cross product of two unit edge directions (the sine of their angle)
@@ -233,13 +238,17 @@ void edge_contact(const OrientedBox& a, const OrientedBox& b, const Separation& 
 /// eps / length, so 1e-6 keeps a wrongly tilted axis below 1e-10 of the box size.
 constexpr double parallel_edges = tolerances::parallel_edges;
 
-/// The separating-axis test; false when some axis separates the boxes by more than `tie`.
-/// Boxes that touch to within rounding are in contact, with an overlap of (about) zero: a
-/// stack built of boxes exactly on each other is held from its first step, instead of each
-/// box finding the one below only when rounding happens to make them overlap.
-bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& result) {
+/// The separating-axis test; false when some axis separates the boxes by more than `tie`
+/// plus `reach` (0, or the reach of speculative contacts). Boxes that touch to within rounding
+/// are in contact, with an overlap of (about) zero: a stack built of boxes exactly on each
+/// other is held from its first step, instead of each box finding the one below only when
+/// rounding happens to make them overlap. Boxes apart by less than the reach get the axis that
+/// separates them most (the least overlap, negative), as overlapping boxes get the one that
+/// separates them soonest.
+bool least_overlap(const OrientedBox& a, const OrientedBox& b, double reach, Separation& result) {
     const Vector3 offset = a.centre - b.centre;
     const double tie = relative_tolerance * std::max(largest_half_extent(a), largest_half_extent(b));
+    const double apart = -(tie + reach);
 
     // The overlap of the shadows on unit axis n, and n turned to point from b towards a.
     const auto overlap_on = [&](const Vector3& n, Vector3& towards_a) {
@@ -253,13 +262,13 @@ bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& resul
     for (int i = 0; i < 3; ++i) {
         Vector3 n;
         const double overlap = overlap_on(a.axis[static_cast<std::size_t>(i)], n);
-        if (overlap <= -tie) return false;
+        if (overlap <= apart) return false;
         if (best_face_a.index_a < 0 || overlap < best_face_a.overlap) best_face_a = {Separation::Kind::face_of_a, n, overlap, i, 0};
     }
     for (int j = 0; j < 3; ++j) {
         Vector3 n;
         const double overlap = overlap_on(b.axis[static_cast<std::size_t>(j)], n);
-        if (overlap <= -tie) return false;
+        if (overlap <= apart) return false;
         if (best_face_b.index_b < 0 || overlap < best_face_b.overlap) best_face_b = {Separation::Kind::face_of_b, n, overlap, 0, j};
     }
     Separation best_edges{Separation::Kind::edges, {}, 0.0, -1, -1};
@@ -270,7 +279,7 @@ bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& resul
             if (c_length < parallel_edges) continue;
             Vector3 n;
             const double overlap = overlap_on(c / c_length, n);
-            if (overlap <= -tie) return false;
+            if (overlap <= apart) return false;
             if (best_edges.index_a < 0 || overlap < best_edges.overlap) best_edges = {Separation::Kind::edges, n, overlap, i, j};
         }
     }
@@ -288,15 +297,17 @@ bool least_overlap(const OrientedBox& a, const OrientedBox& b, Separation& resul
          face_area(b, best_face_b.index_b) > face_area(a, best_face_a.index_a)))
         face = &best_face_b;
     // An edge axis must beat the faces clearly: when a face and an edge overlap about equally,
-    // the face gives a stable patch of points where the edge gives one wandering point.
+    // the face gives a stable patch of points where the edge gives one wandering point. Apart,
+    // the edge must separate the boxes clearly more than the face does.
     constexpr double edge_must_beat_face = 0.95;
-    result = (best_edges.index_a >= 0 && best_edges.overlap < edge_must_beat_face * face->overlap - tie) ? best_edges : *face;
+    const double edge_limit = face->overlap >= 0.0 ? edge_must_beat_face * face->overlap : face->overlap / edge_must_beat_face;
+    result = (best_edges.index_a >= 0 && best_edges.overlap < edge_limit - tie) ? best_edges : *face;
     return true;
 }
 
 }  // namespace
 
-bool collide_box_plane(const RigidBody& box, const RigidBody& plane, Contact& out) {
+bool collide_box_plane(const RigidBody& box, const RigidBody& plane, Contact& out, double reach) {
     out = Contact{};
     const OrientedBox b = oriented_box(box);
     const Vector3 normal = rotate(plane.orientation, plane.shape.normal);
@@ -307,7 +318,7 @@ bool collide_box_plane(const RigidBody& box, const RigidBody& plane, Contact& ou
         Vector3 p = b.centre;
         for (std::size_t k = 0; k < 3; ++k) p += b.axis[k] * (((corner >> k) & 1) != 0 ? b.half[k] : -b.half[k]);
         const double depth = surface - dot(p, normal);
-        if (depth > 0.0) corners.add(p + normal * (depth / 2.0), depth, merge_distance);
+        if (depth > -reach) corners.add(p + normal * (depth / 2.0), depth, merge_distance);  // reach 0: behind the plane
     }
     if (corners.size() == 0) return false;
     out.normal = normal;
@@ -315,7 +326,7 @@ bool collide_box_plane(const RigidBody& box, const RigidBody& plane, Contact& ou
     return true;
 }
 
-bool collide_sphere_box(const RigidBody& sphere, const RigidBody& box, Contact& out) {
+bool collide_sphere_box(const RigidBody& sphere, const RigidBody& box, Contact& out, double reach) {
     out = Contact{};
     const OrientedBox b = oriented_box(box);
     const double radius = sphere.shape.radius;
@@ -336,7 +347,7 @@ bool collide_sphere_box(const RigidBody& sphere, const RigidBody& box, Contact& 
     if (!inside) {
         const Vector3 away = sphere.position - nearest;
         const double distance = length(away);
-        if (distance >= radius) return false;
+        if (distance >= radius + reach) return false;
         normal = away / distance;  // distance > 0 because the centre is outside the box
         surface_point = nearest;
         depth = radius - distance;
@@ -357,44 +368,45 @@ bool collide_sphere_box(const RigidBody& sphere, const RigidBody& box, Contact& 
     return true;
 }
 
-bool collide_box_box(const RigidBody& a, const RigidBody& b, Contact& out) {
+bool collide_box_box(const RigidBody& a, const RigidBody& b, Contact& out, double reach) {
     out = Contact{};
     const OrientedBox box_a = oriented_box(a);
     const OrientedBox box_b = oriented_box(b);
     Separation s;
-    if (!least_overlap(box_a, box_b, s)) return false;
+    if (!least_overlap(box_a, box_b, reach, s)) return false;
     const double size = std::max(largest_half_extent(box_a), largest_half_extent(box_b));
     const double merge_distance = relative_tolerance * size;
+    const double tie = relative_tolerance * size;  // least_overlap()'s
     const double touching = tolerances::resting_corner * size;
 
     out.normal = s.normal;
     if (s.kind == Separation::Kind::face_of_a)  // a's face towards b points along -normal
-        clip_incident_face(box_a, s.index_a, -s.normal, box_b, s.normal, merge_distance, touching, out);
+        clip_incident_face(box_a, s.index_a, -s.normal, box_b, s.normal, merge_distance, touching, reach, out);
     else if (s.kind == Separation::Kind::face_of_b)  // b's face towards a points along +normal
-        clip_incident_face(box_b, s.index_b, s.normal, box_a, s.normal, merge_distance, touching, out);
+        clip_incident_face(box_b, s.index_b, s.normal, box_a, s.normal, merge_distance, touching, reach, out);
     else
-        edge_contact(box_a, box_b, s, out);
+        edge_contact(box_a, box_b, s, tie, out);
     if (out.point_count == 0) return false;  // a face overlap whose clipped face stays in front: only grazing
     out.penetration = std::max(out.penetration, s.overlap);
     return true;
 }
 
 bool collide_with_box(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b,
-                      Contact& out) {
+                      Contact& out, double reach) {
     const ShapeKind ka = a.shape.kind;
     const ShapeKind kb = b.shape.kind;
     bool touching = false;
     if (ka == ShapeKind::box && kb == ShapeKind::box) {
-        touching = collide_box_box(a, b, out);
+        touching = collide_box_box(a, b, out, reach);
     } else if (ka == ShapeKind::box && kb == ShapeKind::plane) {
-        touching = collide_box_plane(a, b, out);
+        touching = collide_box_plane(a, b, out, reach);
     } else if (ka == ShapeKind::plane && kb == ShapeKind::box) {
-        touching = collide_box_plane(b, a, out);
+        touching = collide_box_plane(b, a, out, reach);
         std::swap(index_a, index_b);
     } else if (ka == ShapeKind::sphere && kb == ShapeKind::box) {
-        touching = collide_sphere_box(a, b, out);
+        touching = collide_sphere_box(a, b, out, reach);
     } else if (ka == ShapeKind::box && kb == ShapeKind::sphere) {
-        touching = collide_sphere_box(b, a, out);
+        touching = collide_sphere_box(b, a, out, reach);
         out.normal = -out.normal;  // computed from the box (a) towards the sphere (b)
     }
     if (!touching) return false;

@@ -270,10 +270,10 @@ void BroadPhase::collect_pairs(const ProxySet& set, bool immovable_pairs) {
         const double radii = p.radius + q.radius + margin;
         const double reach = (radii + p.travel + q.travel) * (1.0 + tolerances::may_touch_slack) + slack;
         if (d2 > reach * reach) return;
-        // Two spheres' speculative contacts also reach as far as the two travelled (within
-        // `reach` above). Conservative by a relative slack, so rounding here never drops a pair
-        // the narrow phase would keep.
-        const double contact = p.sphere && q.sphere ? p.radius + q.radius + speculative_reach(margin, p.travel, q.travel) : radii;
+        // Speculative contacts also reach as far as the two travelled (within `reach` above;
+        // planes are not in the grid). Conservative by a relative slack, so rounding here never
+        // drops a pair the narrow phase would keep.
+        const double contact = p.radius + q.radius + speculative_reach(margin, p.travel, q.travel);
         if (d2 <= contact * contact * (1.0 + tolerances::conservative_slack) && (immovable_pairs || p.movable || q.movable)) {
             const std::uint64_t a = std::min(p.index, q.index), b = std::max(p.index, q.index);
             contact_keys_.push_back(a << 32 | b);

@@ -53,14 +53,15 @@ void write_spheres(const RigidBody& sphere1, const RigidBody& sphere2, Contact& 
 }
 
 /// Whether a pair with a box can touch at all: its bounding sphere (workbook::bounding_radius)
-/// reaches the other body's, or the plane. Conservative; the box test decides.
-bool bounding_spheres_may_touch(const RigidBody& a, const RigidBody& b) {
-    if (a.shape.kind == ShapeKind::plane) return bounding_spheres_may_touch(b, a);
+/// reaches the other body's, or the plane, or comes within `gap` of it. Conservative; the box
+/// test decides.
+bool bounding_spheres_may_touch(const RigidBody& a, const RigidBody& b, double gap = 0.0) {
+    if (a.shape.kind == ShapeKind::plane) return bounding_spheres_may_touch(b, a, gap);
     if (b.shape.kind == ShapeKind::plane) {
         const Vector3 normal = rotate(b.orientation, b.shape.normal);
-        return !(dot(a.position - b.position, normal) > bounding_radius(a));
+        return !(dot(a.position - b.position, normal) > bounding_radius(a) + gap);
     }
-    const double reach = bounding_radius(a) + bounding_radius(b);
+    const double reach = bounding_radius(a) + bounding_radius(b) + gap;
     return !(length_squared(a.position - b.position) > reach * reach);
 }
 
@@ -118,19 +119,27 @@ bool within_margin(const RigidBody& a, const RigidBody& b, double distance, doub
             return sphere_plane_overlap(sphere.position, sphere.shape.radius + distance, plane.position,
                                         rotate(plane.orientation, plane.shape.normal));
         }
+        // The box test decides; here only whether the bounding spheres come within reach.
         case ShapePair::sphere_box:
-        case ShapePair::plane_box:
-        case ShapePair::box_box:
+        case ShapePair::box_box: return bounding_spheres_may_touch(a, b, speculative_reach(distance, travel_a, travel_b));
+        case ShapePair::plane_box: return bounding_spheres_may_touch(a, b, distance);  // the plane stays, as above
         case ShapePair::plane_plane: return false;
     }
     return false;
 }
 
-bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact) {
+double speculative_reach(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b) {
+    // A plane stays where it is (within_margin()).
+    if (a.shape.kind == ShapeKind::plane || b.shape.kind == ShapeKind::plane) return distance;
+    return speculative_reach(distance, travel_a, travel_b);
+}
+
+bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact,
+                   double reach) {
     switch (pair_of(a.shape.kind, b.shape.kind)) {
         case ShapePair::sphere_box:
         case ShapePair::plane_box:
-        case ShapePair::box_box: return collide_with_box(a, index_a, b, index_b, contact);
+        case ShapePair::box_box: return collide_with_box(a, index_a, b, index_b, contact, reach);
         case ShapePair::sphere_plane:
             // The sphere is body 1, so that the normal points from the plane to it.
             if (a.shape.kind == ShapeKind::plane) {

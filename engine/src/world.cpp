@@ -299,12 +299,15 @@ void World::add_contact_if_any(std::uint32_t i, std::uint32_t j) {
     const RigidBody& a = bodies_[i];
     const RigidBody& b = bodies_[j];
     const double margin = contact_margin();
-    if (!overlaps(a, b) && !(margin > 0.0 && within_margin(a, b, margin, travel_in_step(a), travel_in_step(b)))) return;
+    const double travel_a = margin > 0.0 ? travel_in_step(a) : 0.0, travel_b = margin > 0.0 ? travel_in_step(b) : 0.0;
+    if (!overlaps(a, b) && !(margin > 0.0 && within_margin(a, b, margin, travel_a, travel_b))) return;
     // Two immovable bodies never get a contact: nothing could answer it.
     if (a.is_immovable() && b.is_immovable()) return;
     // The slot is reserved first so the contact is written in place; a box pair that the full
-    // test finds apart gives it back (pop_back keeps the capacity: still no allocation).
-    if (!write_contact(a, i, b, j, contacts_.emplace_back())) contacts_.pop_back();
+    // test finds apart (beyond the reach of speculative points) gives it back (pop_back keeps
+    // the capacity: still no allocation).
+    const double reach = margin > 0.0 ? speculative_reach(a, b, margin, travel_a, travel_b) : 0.0;
+    if (!write_contact(a, i, b, j, contacts_.emplace_back(), reach)) contacts_.pop_back();
 }
 
 void World::add_contact_from_proxies(std::uint32_t i, std::uint32_t j) {
@@ -512,7 +515,7 @@ std::vector<StageUse> World::plan() const {
         if (solver.speculative_distance > 0.0) {
             char distance[32];
             std::snprintf(distance, sizeof distance, "%g", solver.speculative_distance);
-            speculative = std::string("; speculative contacts for spheres and planes apart by less than ") + distance + " m";
+            speculative = std::string("; speculative contacts for bodies apart by less than ") + distance + " m";
         }
         const std::string sweeps =
             solver.substeps > 0 || solver.shock_sweeps == 0

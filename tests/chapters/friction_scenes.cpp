@@ -217,9 +217,9 @@ TEST_CASE("no step of a friction scene adds energy", "[friction]") {
                              "ball-starts-rolling", "ball-with-backspin", "rod-lands-on-its-end"}) {
         CAPTURE(name);
         const Scene scene = friction_scene(name);
-        // A body that lands fast (the rod, e = 1) arrives sunk into the ground by up to its
-        // approach speed times dt, and removing that overlap lifts it: its total energy is
-        // checked over the scene, its kinetic energy at every step.
+        // A body that bounces (the rod, e = 1) is also moved within the step by the solve's
+        // change of its velocity, up at a landing, which adds potential energy: its total
+        // energy is checked over the scene, its kinetic energy at every step.
         const bool bounces = scene.bodies[0].restitution > 0.0;
         World world = world_of(scene);
         const double m = mover(world).mass(), dt = scene.settings.time_step;

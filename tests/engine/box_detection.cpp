@@ -415,6 +415,49 @@ TEST_CASE("box-box: apart, or separated only along an edge axis, is no contact",
     CHECK_FALSE(collide_box_box(upper, lower, contact));
 }
 
+TEST_CASE("speculative points: a pair with a box apart by less than the reach gets the points it would touch at, its gap as their depth",
+          "[detection][box][speculative]") {
+    // Each pair 0.01 apart: within a reach of 0.02 the points are written with depth -0.01 (to
+    // the rounding of the positions, about 1); beyond a reach of 0.005, or with none, no contact.
+    const double gap = 0.01, tolerance = 16 * eps;
+    auto check_gap_points = [&](const Contact& contact, std::size_t count, const Vector3& normal) {
+        CHECK(contact.point_count == count);
+        CHECK_THAT(contact.normal, is_close_to(normal, tolerance));
+        for (std::size_t i = 0; i < contact.point_count; ++i) CHECK_THAT(contact.points[i].penetration, WithinAbs(-gap, tolerance));
+    };
+    Contact contact;
+    SECTION("a box above the ground: its four bottom corners") {
+        const RigidBody box = make_box(2.0, {0.5, 0.25, 0.3}, {1.0, 0.25 + gap, -2.0});
+        REQUIRE(collide_box_plane(box, ground, contact, 0.02));
+        check_gap_points(contact, 4, {0, 1, 0});
+        CHECK_FALSE(collide_box_plane(box, ground, contact, 0.005));
+        CHECK_FALSE(collide_box_plane(box, ground, contact));
+    }
+    SECTION("a sphere above a face of a box: one point") {
+        const RigidBody box = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0});
+        const RigidBody sphere = make_sphere(1.0, 0.2, {0.1, 0.5 + 0.2 + gap, -0.1});
+        REQUIRE(collide_sphere_box(sphere, box, contact, 0.02));
+        check_gap_points(contact, 1, {0, 1, 0});
+        CHECK_FALSE(collide_sphere_box(sphere, box, contact, 0.005));
+        CHECK_FALSE(collide_sphere_box(sphere, box, contact));
+    }
+    SECTION("a cube above a cube, face to face: the four corners of the face") {
+        const RigidBody lower = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0});
+        const RigidBody upper = make_box(1.0, {0.5, 0.5, 0.5}, {0.2, 1.0 + gap, 0.1});
+        REQUIRE(collide_box_box(upper, lower, contact, 0.02));
+        check_gap_points(contact, 4, {0, 1, 0});
+        CHECK_FALSE(collide_box_box(upper, lower, contact, 0.005));
+        CHECK_FALSE(collide_box_box(upper, lower, contact));
+    }
+    SECTION("crossing cubes apart along an edge axis: one point between the edges") {
+        const RigidBody lower = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0}, turn({0, 0, 1}, 45));
+        const RigidBody upper = make_box(1.0, {0.5, 0.5, 0.5}, {0, std::sqrt(2.0) + gap, 0}, turn({1, 0, 0}, 45));
+        REQUIRE(collide_box_box(upper, lower, contact, 0.02));
+        check_gap_points(contact, 1, {0, 1, 0});
+        CHECK_FALSE(collide_box_box(upper, lower, contact, 0.005));
+    }
+}
+
 TEST_CASE("collide() dispatches pairs with a box: plane as body 2, otherwise in the order given", "[detection][box]") {
     const RigidBody box = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0.4, 0});
     const RigidBody ball = make_sphere(1.0, 0.25, {0, 1.1, 0});

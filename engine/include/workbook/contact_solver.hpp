@@ -120,13 +120,14 @@ struct ContactSolverSettings {
     double sleep_speed = 0.01;
     /// An island falls asleep when every body of it has been still this long, s.
     double sleep_time = 0.5;
-    /// Speculative contacts, m (0: off). Detection also reports sphere
-    /// and plane pairs that are apart by less than this (a point of negative depth: the gap),
+    /// Speculative contacts, m (0: off). Detection also reports pairs
+    /// that are apart by less than this (a point of negative depth: the gap; for a pair with
+    /// a box, the points it would touch at first, box_detection.hpp),
     /// and the solver lets such a point approach only as fast as closes its gap within the
     /// step: a body pushed by the solve towards a neighbour it does not touch yet stops
     /// touching it instead of passing into it unseen (the deep overlaps of a pile that falls
     /// onto itself, docs/performance.md). A gap gets no bias and no bounce; the chapter's
-    /// functions see its depth as 0. Pairs with a box get no speculative points.
+    /// functions see its depth as 0.
     ///
     /// How far apart a pair may be and still matter: the solve changes a body's velocity by
     /// at most about the speed of what hits it, and moves it by that change times dt; in a
@@ -134,8 +135,8 @@ struct ContactSolverSettings {
     /// step at 60 Hz. A larger distance catches more and costs more pairs (in a packed pile
     /// of discs, up to a quarter of a diameter adds only the six nearest neighbours). 2 cm is
     /// the gap between the rows the bench's pile starts in, and did as well there as 5 cm.
-    /// Two spheres also reach as far as both travelled in the step (speculative_reach(),
-    /// with the swept test on): the solve may stop a sphere that still moves at its own
+    /// Two bodies that are not planes also reach as far as both travelled in the step
+    /// (speculative_reach(), with the swept test on): the solve may stop a sphere that still moves at its own
     /// speed while the sphere behind it keeps going, as at the top of a column that is
     /// landing, which closes their gap by that speed times the step, whatever the distance.
     double speculative_distance = 0.02;

@@ -56,14 +56,22 @@ inline double speculative_reach(double distance, double travel1, double travel2)
 /// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres are
 /// apart by less than speculative_reach(distance, travel_a, travel_b), or a sphere and a plane
 /// by less than `distance` (or overlap); write_contact() then writes their contact, with a
-/// negative depth (the gap) when they are apart. False for a pair with a box, which gets no
-/// speculative points.
+/// negative depth (the gap) when they are apart. For a pair with a box, whether the bounding
+/// spheres come that near: write_contact(), given the reach of the pair
+/// (speculative_reach(a, b, ...)), decides and writes the speculative points.
 bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
+
+/// The reach of the speculative contacts of the pair a, b: speculative_reach(distance,
+/// travel_a, travel_b), or only `distance` when one of the two is a plane, which does not move.
+double speculative_reach(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
 
 /// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
 /// Contact; same result as collide(). Returns false when the pair does not touch after all:
 /// for a pair with a box, overlaps() only compares bounding spheres and the full
-/// separating-axis test runs here.
-bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact);
+/// separating-axis test runs here. `reach` (m, 0 by default) is the reach of the pair's
+/// speculative points for a pair with a box (box_detection.hpp); two spheres, or a sphere and
+/// a plane, are written whatever their distance, the gap as a negative depth.
+bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact,
+                   double reach = 0.0);
 
 }  // namespace workbook
