@@ -425,36 +425,27 @@ TEST_CASE("speculative points: a pair with a box apart by less than the reach ge
         CHECK_THAT(contact.normal, is_close_to(normal, tolerance));
         for (std::size_t i = 0; i < contact.point_count; ++i) CHECK_THAT(contact.points[i].penetration, WithinAbs(-gap, tolerance));
     };
-    Contact contact;
+    // Within the reach: `count` points at the gap; beyond a smaller reach, or with none: no contact.
+    using Test = bool (*)(const RigidBody&, const RigidBody&, Contact&, double);
+    auto check_pair = [&](Test collide_pair, const RigidBody& body1, const RigidBody& body2, std::size_t count) {
+        Contact contact;
+        REQUIRE(collide_pair(body1, body2, contact, 0.02));
+        check_gap_points(contact, count, {0, 1, 0});
+        CHECK_FALSE(collide_pair(body1, body2, contact, 0.005));
+        CHECK_FALSE(collide_pair(body1, body2, contact, 0.0));
+    };
     SECTION("a box above the ground: its four bottom corners") {
-        const RigidBody box = make_box(2.0, {0.5, 0.25, 0.3}, {1.0, 0.25 + gap, -2.0});
-        REQUIRE(collide_box_plane(box, ground, contact, 0.02));
-        check_gap_points(contact, 4, {0, 1, 0});
-        CHECK_FALSE(collide_box_plane(box, ground, contact, 0.005));
-        CHECK_FALSE(collide_box_plane(box, ground, contact));
+        check_pair(&collide_box_plane, make_box(2.0, {0.5, 0.25, 0.3}, {1.0, 0.25 + gap, -2.0}), ground, 4);
     }
     SECTION("a sphere above a face of a box: one point") {
-        const RigidBody box = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0});
-        const RigidBody sphere = make_sphere(1.0, 0.2, {0.1, 0.5 + 0.2 + gap, -0.1});
-        REQUIRE(collide_sphere_box(sphere, box, contact, 0.02));
-        check_gap_points(contact, 1, {0, 1, 0});
-        CHECK_FALSE(collide_sphere_box(sphere, box, contact, 0.005));
-        CHECK_FALSE(collide_sphere_box(sphere, box, contact));
+        check_pair(&collide_sphere_box, make_sphere(1.0, 0.2, {0.1, 0.5 + 0.2 + gap, -0.1}), make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0}), 1);
     }
     SECTION("a cube above a cube, face to face: the four corners of the face") {
-        const RigidBody lower = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0});
-        const RigidBody upper = make_box(1.0, {0.5, 0.5, 0.5}, {0.2, 1.0 + gap, 0.1});
-        REQUIRE(collide_box_box(upper, lower, contact, 0.02));
-        check_gap_points(contact, 4, {0, 1, 0});
-        CHECK_FALSE(collide_box_box(upper, lower, contact, 0.005));
-        CHECK_FALSE(collide_box_box(upper, lower, contact));
+        check_pair(&collide_box_box, make_box(1.0, {0.5, 0.5, 0.5}, {0.2, 1.0 + gap, 0.1}), make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0}), 4);
     }
     SECTION("crossing cubes apart along an edge axis: one point between the edges") {
-        const RigidBody lower = make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0}, turn({0, 0, 1}, 45));
-        const RigidBody upper = make_box(1.0, {0.5, 0.5, 0.5}, {0, std::sqrt(2.0) + gap, 0}, turn({1, 0, 0}, 45));
-        REQUIRE(collide_box_box(upper, lower, contact, 0.02));
-        check_gap_points(contact, 1, {0, 1, 0});
-        CHECK_FALSE(collide_box_box(upper, lower, contact, 0.005));
+        check_pair(&collide_box_box, make_box(1.0, {0.5, 0.5, 0.5}, {0, std::sqrt(2.0) + gap, 0}, turn({1, 0, 0}, 45)),
+                   make_box(1.0, {0.5, 0.5, 0.5}, {0, 0, 0}, turn({0, 0, 1}, 45)), 1);
     }
 }
 
