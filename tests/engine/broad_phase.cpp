@@ -221,6 +221,77 @@ TEST_CASE("a compact set finds the pairs and the bodies near that a full one fin
     CHECK(found > 1000);  // the queries did find bodies, not only empty answers
 }
 
+TEST_CASE("a compact set's grid laid in the order its bodies come finds the pairs and the bodies near of the world's "
+          "order",
+          "[broad_phase][event]") {
+    // The grid of a compact set lays its rows along the axis along which consecutive bodies
+    // jump most and its layers along the one with the fewest jumps (BroadPhase::lay_axes()).
+    // Balls on a jittered lattice, numbered along each of the six orders of the axes in turn,
+    // must give the pairs and the bodies near of a full set, whose grid keeps the world's axes.
+    constexpr int side = 12;
+    constexpr double spacing = 0.22;
+    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& order : orders) {
+        CAPTURE(order[0], order[1], order[2]);
+        SeededRandom random(workbook::testing::run_seed() + 31);
+        std::vector<RigidBody> bodies;
+        std::vector<double> inflates;
+        for (int n = 0; n < side * side * side; ++n) {
+            // Along order[0] fastest: consecutive balls jump a spacing along it, and along the
+            // others only at the end of a row or a layer (the jitter stays within the radii).
+            const int step[3] = {n % side, (n / side) % side, n / (side * side)};
+            double at[3];
+            for (int g = 0; g < 3; ++g) at[order[g]] = spacing * step[g] + random.uniform(-0.025, 0.025);
+            const double radius = random.uniform(0.06, 0.12);
+            bodies.push_back(make_sphere(1.0, radius, {at[0], at[1], at[2]}));
+            inflates.push_back(random.uniform(0.0, 0.05));
+        }
+        bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0.1, 0}));
+        inflates.push_back(0.0);
+        ProxySet full;
+        ProxySet compact;
+        full.clear(bodies.size());
+        compact.clear(bodies.size(), true);
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            full.add(bodies[i], i, 0.0, {}, inflates[i]);
+            compact.add(bodies[i], i, 0.0, {}, inflates[i]);
+        }
+        full.fine_cells = compact.fine_cells = true;
+        BroadPhase full_grid;
+        BroadPhase compact_grid;
+        std::vector<BodyPair> full_pairs;
+        std::vector<BodyPair> compact_pairs;
+        full_grid.find_pairs(full, full_pairs);
+        compact_grid.find_pairs(compact, compact_pairs);
+        REQUIRE(compact_grid.has_grid());
+        REQUIRE(compact_grid.row_axis() == order[0]);
+        REQUIRE(full_grid.row_axis() == 0);
+        REQUIRE(full_pairs.size() > bodies.size() / 2);
+        const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
+        REQUIRE(std::equal(full_pairs.begin(), full_pairs.end(), compact_pairs.begin(), compact_pairs.end(), same));
+        std::vector<std::uint32_t> near;
+        std::vector<std::uint32_t> near_full;
+        std::size_t found = 0;
+        for (int query = 0; query < 200; ++query) {
+            const Vector3 centre{random.uniform(-0.2, 2.6), random.uniform(-0.2, 2.6), random.uniform(-0.2, 2.6)};
+            const double radius = random.uniform(0.0, 0.6);
+            const Vector3 box = query % 2 == 0 ? Vector3{random.uniform(0.1, 1.5) * radius, random.uniform(0.1, 1.5) * radius,
+                                                         random.uniform(0.1, 1.5) * radius}
+                                               : BroadPhase::unbounded;
+            near.clear();
+            near_full.clear();
+            compact_grid.bodies_near(compact, centre, radius, near, box);
+            full_grid.bodies_near(full, centre, radius, near_full, box);
+            std::sort(near.begin(), near.end());
+            std::sort(near_full.begin(), near_full.end());
+            CAPTURE(query, centre.x, centre.y, centre.z, radius);
+            REQUIRE(near == near_full);
+            found += near.size();
+        }
+        CHECK(found > 500);  // the queries did find bodies, not only empty answers
+    }
+}
+
 TEST_CASE("fine cells find the pairs and the bodies near that whole cells find", "[broad_phase][event]") {
     // Event timing walks cells half a reach wide, each against the two around it each way; the
     // pairs must be those of cells a reach wide (in another order), and a search again around

@@ -253,6 +253,10 @@ public:
     /// True when the last find_pairs() used a grid (false after it fell back to every pair).
     [[nodiscard]] bool has_grid() const { return has_grid_; }
 
+    /// The world axis (0 x, 1 y, 2 z) along which the last grid laid its rows, the cells that
+    /// follow each other in memory (x but for a compact set's: see lay_axes()).
+    [[nodiscard]] int row_axis() const { return axis_[0]; }
+
     /// After a find_pairs() with a swept set and a grid: the bodies whose path may come within
     /// touching distance of fast sphere `body`'s during the step (a superset; each at most once,
     /// in no particular order), as entries: the index (entry & partner_index), and the flag
@@ -272,7 +276,12 @@ private:
     void collect_pairs(const ProxySet& set, bool immovable_pairs);
     /// Appends the pairs of the bounded proxies with the planes.
     void collect_plane_pairs(const ProxySet& set, bool immovable_pairs);
-    /// The grid cell along `axis` of a bounded proxy's coordinate `x` (as the grid placed it).
+    /// Lays the grid's axes: the world's (x along the rows, then y, then z) for a set that is
+    /// not compact, else in the order the set's bodies come (see the definition); `low` and
+    /// `cells` along the world's axes.
+    void lay_axes(const ProxySet& set, const double (&low)[3], const std::uint64_t (&cells)[3]);
+    /// The grid cell along grid axis `axis` of a bounded proxy's coordinate `x` along it (as the
+    /// grid placed it). Only a compact set's grid lays its axes other than the world's.
     [[nodiscard]] std::uint64_t axis_cell_of(double x, int axis) const {
         return std::min(static_cast<std::uint64_t>((x - low_[axis]) * inverse_cell_), cells_[axis] - 1);
     }
@@ -293,9 +302,10 @@ private:
     std::vector<std::uint32_t> sweep_partners_;
     ProxySet scratch_set_;                    ///< for the find_pairs() that gathers itself
     bool has_grid_ = false;
-    double low_[3] = {0.0, 0.0, 0.0};  ///< the grid's lowest corner, m
+    int axis_[3] = {0, 1, 2};          ///< the world axis of each of the grid's axes, the rows' first
+    double low_[3] = {0.0, 0.0, 0.0};  ///< the grid's lowest corner along its axes, m
     double inverse_cell_ = 0.0;        ///< 1 / cell width, 1/m
-    std::uint64_t cells_[3] = {1, 1, 1};
+    std::uint64_t cells_[3] = {1, 1, 1};  ///< cells along the grid's axes
     double slack_ = 0.0;               ///< absolute room for rounding in the swept reach, m
     double largest_radius_ = 0.0;      ///< largest bounding radius in the grid, m
     double margin_ = 0.0;              ///< the set's margin (ProxySet::margin), m
