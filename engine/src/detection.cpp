@@ -106,32 +106,30 @@ bool overlaps(const RigidBody& a, const RigidBody& b) {
     return false;
 }
 
+double speculative_reach(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b) {
+    // A plane stays where it is: a body that the solve stops goes back at most to where it
+    // started the step, which was clear of the plane, so only the distance.
+    if (a.shape.kind == ShapeKind::plane || b.shape.kind == ShapeKind::plane) return distance;
+    return speculative_reach(distance, travel_a, travel_b);
+}
+
 bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b) {
+    const double reach = speculative_reach(a, b, distance, travel_a, travel_b);
     switch (pair_of(a.shape.kind, b.shape.kind)) {
-        case ShapePair::sphere_sphere:
-            return spheres_overlap(a.position, a.shape.radius + speculative_reach(distance, travel_a, travel_b), b.position,
-                                   b.shape.radius);
+        case ShapePair::sphere_sphere: return spheres_overlap(a.position, a.shape.radius + reach, b.position, b.shape.radius);
         case ShapePair::sphere_plane: {
-            // A plane stays where it is: a sphere that the solve stops goes back at most to
-            // where it started the step, which was clear of the plane, so only the distance.
             const RigidBody& sphere = a.shape.kind == ShapeKind::sphere ? a : b;
             const RigidBody& plane = a.shape.kind == ShapeKind::sphere ? b : a;
-            return sphere_plane_overlap(sphere.position, sphere.shape.radius + distance, plane.position,
+            return sphere_plane_overlap(sphere.position, sphere.shape.radius + reach, plane.position,
                                         rotate(plane.orientation, plane.shape.normal));
         }
         // The box test decides; here only whether the bounding spheres come within reach.
         case ShapePair::sphere_box:
-        case ShapePair::box_box: return bounding_spheres_may_touch(a, b, speculative_reach(distance, travel_a, travel_b));
-        case ShapePair::plane_box: return bounding_spheres_may_touch(a, b, distance);  // the plane stays, as above
+        case ShapePair::box_box:
+        case ShapePair::plane_box: return bounding_spheres_may_touch(a, b, reach);
         case ShapePair::plane_plane: return false;
     }
     return false;
-}
-
-double speculative_reach(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b) {
-    // A plane stays where it is (within_margin()).
-    if (a.shape.kind == ShapeKind::plane || b.shape.kind == ShapeKind::plane) return distance;
-    return speculative_reach(distance, travel_a, travel_b);
 }
 
 bool write_contact(const RigidBody& a, std::uint32_t index_a, const RigidBody& b, std::uint32_t index_b, Contact& contact,

@@ -126,8 +126,9 @@ struct ContactSolverSettings {
     /// and the solver lets such a point approach only as fast as closes its gap within the
     /// step: a body pushed by the solve towards a neighbour it does not touch yet stops
     /// touching it instead of passing into it unseen (the deep overlaps of a pile that falls
-    /// onto itself, docs/performance.md). A gap gets no bias and no bounce; the chapter's
-    /// functions see its depth as 0.
+    /// onto itself, docs/performance.md). A gap gets no bias, and a bounce only when the pair
+    /// would meet in the next move fast enough to bounce (it then bounces a gap short of
+    /// touching); the chapter's functions see its depth as 0.
     ///
     /// How far apart a pair may be and still matter: the solve changes a body's velocity by
     /// at most about the speed of what hits it, and moves it by that change times dt; in a
@@ -136,9 +137,10 @@ struct ContactSolverSettings {
     /// of discs, up to a quarter of a diameter adds only the six nearest neighbours). 2 cm is
     /// the gap between the rows the bench's pile starts in, and did as well there as 5 cm.
     /// Two bodies that are not planes also reach as far as both travelled in the step
-    /// (speculative_reach(), with the swept test on): the solve may stop a sphere that still moves at its own
-    /// speed while the sphere behind it keeps going, as at the top of a column that is
-    /// landing, which closes their gap by that speed times the step, whatever the distance.
+    /// (speculative_reach(), with the swept test on): the solve may stop a body that still
+    /// moves at its own speed while the body behind it keeps going, as at the top of a column
+    /// that is landing, which closes their gap by that speed times the step, whatever the
+    /// distance.
     double speculative_distance = 0.02;
 };
 

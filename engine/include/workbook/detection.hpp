@@ -53,17 +53,16 @@ inline double speculative_reach(double distance, double travel1, double travel2)
     return distance > 0.0 ? distance + travel1 + travel2 : 0.0;
 }
 
-/// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres are
-/// apart by less than speculative_reach(distance, travel_a, travel_b), or a sphere and a plane
-/// by less than `distance` (or overlap); write_contact() then writes their contact, with a
-/// negative depth (the gap) when they are apart. For a pair with a box, whether the bounding
-/// spheres come that near: write_contact(), given the reach of the pair
-/// (speculative_reach(a, b, ...)), decides and writes the speculative points.
-bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
-
 /// The reach of the speculative contacts of the pair a, b: speculative_reach(distance,
 /// travel_a, travel_b), or only `distance` when one of the two is a plane, which does not move.
 double speculative_reach(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
+
+/// Speculative contacts (ContactSolverSettings::speculative_distance): whether two spheres, or
+/// a sphere and a plane, are apart by less than the pair's speculative_reach(a, b, ...) (or
+/// overlap); write_contact() then writes their contact, with a negative depth (the gap) when
+/// they are apart. For a pair with a box, whether the bounding spheres come that near:
+/// write_contact(), given the pair's reach, decides and writes the speculative points.
+bool within_margin(const RigidBody& a, const RigidBody& b, double distance, double travel_a, double travel_b);
 
 /// Writes the contact of a pair overlaps() accepted into `contact`, which must be a default
 /// Contact; same result as collide(). Returns false when the pair does not touch after all:
