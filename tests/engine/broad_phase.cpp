@@ -58,6 +58,46 @@ std::vector<RigidBody> crowd(std::uint64_t seed, int balls) {
     return bodies;
 }
 
+/// The same bodies gathered as a full set and as a compact one (event timing's), each sphere
+/// widened by its `inflates` entry, with fine cells, and each set's grid and pairs.
+struct FullAndCompact {
+    ProxySet full;
+    ProxySet compact;
+    BroadPhase full_grid;
+    BroadPhase compact_grid;
+    std::vector<BodyPair> full_pairs;
+    std::vector<BodyPair> compact_pairs;
+
+    FullAndCompact(const std::vector<RigidBody>& bodies, const std::vector<double>& inflates) {
+        full.clear(bodies.size());
+        compact.clear(bodies.size(), true);
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            full.add(bodies[i], i, 0.0, {}, inflates[i]);
+            compact.add(bodies[i], i, 0.0, {}, inflates[i]);
+        }
+        full.fine_cells = compact.fine_cells = true;
+        full_grid.find_pairs(full, full_pairs);
+        compact_grid.find_pairs(compact, compact_pairs);
+    }
+
+    /// The bodies each grid finds near `centre` (BroadPhase::bodies_near()), each list sorted.
+    void bodies_near(const Vector3& centre, double radius, const Vector3& box, std::vector<std::uint32_t>& near_compact,
+                     std::vector<std::uint32_t>& near_full) const {
+        near_compact.clear();
+        near_full.clear();
+        compact_grid.bodies_near(compact, centre, radius, near_compact, box);
+        full_grid.bodies_near(full, centre, radius, near_full, box);
+        std::sort(near_compact.begin(), near_compact.end());
+        std::sort(near_full.begin(), near_full.end());
+    }
+
+    /// Whether both grids found the same pairs, in the same order.
+    [[nodiscard]] bool same_pairs() const {
+        const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
+        return std::equal(full_pairs.begin(), full_pairs.end(), compact_pairs.begin(), compact_pairs.end(), same);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("the grid finds the contacts of testing every pair, in the same order, step after step", "[world][broad_phase]") {
@@ -160,28 +200,16 @@ TEST_CASE("a compact set finds the pairs and the bodies near that a full one fin
     // search again passes a box outside which it keeps no body (BroadPhase::bodies_near()).
     const std::vector<RigidBody> bodies = crowd(workbook::testing::run_seed() + 21, 1500);
     SeededRandom random(workbook::testing::run_seed() + 22);
-    ProxySet full;
-    ProxySet compact;
-    full.clear(bodies.size());
-    compact.clear(bodies.size(), true);
-    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-        const double inflate = random.uniform(0.0, 0.1);
-        full.add(bodies[i], i, 0.0, {}, inflate);
-        compact.add(bodies[i], i, 0.0, {}, inflate);
-    }
-    full.fine_cells = compact.fine_cells = true;
+    std::vector<double> inflates;
+    for (std::size_t i = 0; i < bodies.size(); ++i) inflates.push_back(random.uniform(0.0, 0.1));
+    const FullAndCompact sets(bodies, inflates);
+    const ProxySet& full = sets.full;
+    const ProxySet& compact = sets.compact;
     REQUIRE(compact.proxies.empty());
     REQUIRE(compact.size() == full.size());
-    BroadPhase full_grid;
-    BroadPhase compact_grid;
-    std::vector<BodyPair> full_pairs;
-    std::vector<BodyPair> compact_pairs;
-    full_grid.find_pairs(full, full_pairs);
-    compact_grid.find_pairs(compact, compact_pairs);
-    REQUIRE(compact_grid.has_grid());
-    REQUIRE(full_pairs.size() > bodies.size() / 4);
-    const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
-    REQUIRE(std::equal(full_pairs.begin(), full_pairs.end(), compact_pairs.begin(), compact_pairs.end(), same));
+    REQUIRE(sets.compact_grid.has_grid());
+    REQUIRE(sets.full_pairs.size() > bodies.size() / 4);
+    REQUIRE(sets.same_pairs());
     constexpr double slack = 1.0 + tolerances::conservative_slack;
     std::vector<std::uint32_t> near;
     std::vector<std::uint32_t> near_full;
@@ -195,10 +223,7 @@ TEST_CASE("a compact set finds the pairs and the bodies near that a full one fin
         const Vector3 box = boxed ? Vector3{random.uniform(0.1, 1.5) * radius, random.uniform(0.1, 1.5) * radius,
                                             random.uniform(0.1, 1.5) * radius}
                                   : BroadPhase::unbounded;
-        near.clear();
-        near_full.clear();
-        compact_grid.bodies_near(compact, centre, radius, near, box);
-        full_grid.bodies_near(full, centre, radius, near_full, box);
+        sets.bodies_near(centre, radius, box, near, near_full);
         expected.clear();
         for (const CellProxy& q : compact.cells) {
             if (q.plane) continue;
@@ -210,8 +235,6 @@ TEST_CASE("a compact set finds the pairs and the bodies near that a full one fin
         }
         for (const PlaneProxy& plane : compact.planes)
             if (dot(centre - plane.point, plane.normal) <= radius * slack) expected.push_back(plane.index);
-        std::sort(near.begin(), near.end());
-        std::sort(near_full.begin(), near_full.end());
         std::sort(expected.begin(), expected.end());
         CAPTURE(query, boxed, centre.x, centre.y, centre.z, radius);
         REQUIRE(near == expected);
@@ -248,27 +271,12 @@ TEST_CASE("a compact set's grid laid in the order its bodies come finds the pair
         }
         bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0.1, 0}));
         inflates.push_back(0.0);
-        ProxySet full;
-        ProxySet compact;
-        full.clear(bodies.size());
-        compact.clear(bodies.size(), true);
-        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            full.add(bodies[i], i, 0.0, {}, inflates[i]);
-            compact.add(bodies[i], i, 0.0, {}, inflates[i]);
-        }
-        full.fine_cells = compact.fine_cells = true;
-        BroadPhase full_grid;
-        BroadPhase compact_grid;
-        std::vector<BodyPair> full_pairs;
-        std::vector<BodyPair> compact_pairs;
-        full_grid.find_pairs(full, full_pairs);
-        compact_grid.find_pairs(compact, compact_pairs);
-        REQUIRE(compact_grid.has_grid());
-        REQUIRE(compact_grid.row_axis() == order[0]);
-        REQUIRE(full_grid.row_axis() == 0);
-        REQUIRE(full_pairs.size() > bodies.size() / 2);
-        const auto same = [](BodyPair a, BodyPair b) { return a.first == b.first && a.second == b.second; };
-        REQUIRE(std::equal(full_pairs.begin(), full_pairs.end(), compact_pairs.begin(), compact_pairs.end(), same));
+        const FullAndCompact sets(bodies, inflates);
+        REQUIRE(sets.compact_grid.has_grid());
+        REQUIRE(sets.compact_grid.row_axis() == order[0]);
+        REQUIRE(sets.full_grid.row_axis() == 0);
+        REQUIRE(sets.full_pairs.size() > bodies.size() / 2);
+        REQUIRE(sets.same_pairs());
         std::vector<std::uint32_t> near;
         std::vector<std::uint32_t> near_full;
         std::size_t found = 0;
@@ -278,12 +286,7 @@ TEST_CASE("a compact set's grid laid in the order its bodies come finds the pair
             const Vector3 box = query % 2 == 0 ? Vector3{random.uniform(0.1, 1.5) * radius, random.uniform(0.1, 1.5) * radius,
                                                          random.uniform(0.1, 1.5) * radius}
                                                : BroadPhase::unbounded;
-            near.clear();
-            near_full.clear();
-            compact_grid.bodies_near(compact, centre, radius, near, box);
-            full_grid.bodies_near(full, centre, radius, near_full, box);
-            std::sort(near.begin(), near.end());
-            std::sort(near_full.begin(), near_full.end());
+            sets.bodies_near(centre, radius, box, near, near_full);
             CAPTURE(query, centre.x, centre.y, centre.z, radius);
             REQUIRE(near == near_full);
             found += near.size();
