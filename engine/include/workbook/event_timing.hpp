@@ -109,9 +109,11 @@ struct EventScratch {
     /// Whether `state` and `roles` hold every body as the last step left it (its position and
     /// velocity at the start of the next step, its kind and bounding radius), but for the
     /// bodies of its overlapping pairs (all_pairs), which the discrete stages after it may have
-    /// changed. The next step's first pass then notes again only those, and reads the others'
-    /// copies rather than the bodies: at N = 100,000 the bodies (328 bytes each) come from
-    /// memory, and the first pass read them all. Set at the end of every step; the World
+    /// changed (the loop itself notes again every body it changes, after each response, so
+    /// its copies end as the bodies are, even where a responder changed a mass). The next
+    /// step's first pass then notes again only those, and reads the others' copies rather than
+    /// the bodies: at N = 100,000 the bodies (328 bytes each) come from memory, and the first
+    /// pass read them all. Set at the end of every step; the World
     /// clears it wherever the bodies may change otherwise (World::bodies(), its discrete
     /// stages called on their own), and a change in the number of bodies overrides it.
     bool copies_known = false;
