@@ -495,6 +495,11 @@ public:
     /// Finds the candidate pairs of the step and their first impacts.
     void start() {
         EventScratch& s = scratch_;
+        // The copies the last step left, unless the bodies may have changed since
+        // (EventScratch::copies_known); not again until this step has ended.
+        const bool known = s.copies_known && s.state.size() == count_ && s.roles.size() == count_;
+        s.copies_known = false;
+        if (known) note_after_last_step();
         s.state.resize(count_);
         s.roles.resize(count_);
         s.normals.resize(count_);
@@ -527,17 +532,24 @@ public:
         // set cells that hold three bodies each, and a pair is found among fewer of them.
         s.proxies.fine_cells = true;
         for (std::uint32_t i = 0; i < count_; ++i) {
-            if (i + pass_lookahead < count_) ask_caches_for(&bodies_[i + pass_lookahead], sizeof(RigidBody));
-            const RigidBody& body = bodies_[i];
-            note(i, 0.0);
-            s.reach[i].origin = body.position;
+            // A body is read only where it has no copy from the last step (and planes, whose
+            // normals the copies do not follow).
+            const bool copied = known && !s.roles[i].plane;
+            if (!known && i + pass_lookahead < count_) ask_caches_for(&bodies_[i + pass_lookahead], sizeof(RigidBody));
+            if (!copied) note(i, 0.0);
+            const EventBody& state = s.state[i];
+            const EventRole& role = s.roles[i];
+            s.reach[i].origin = state.position;
             s.reach[i].reach = can_move(i, dt_);
             if (boxes_) {
                 s.reach[i].half_sides = box_half_sides(i, dt_);
-                if (!s.roles[i].plane) note_half_sides(s.reach[i].half_sides);
+                if (!role.plane) note_half_sides(s.reach[i].half_sides);
             }
-            s.proxies.add(body, i, 0.0, {}, s.reach[i].reach);
-            if (s.roles[i].plane && (body.velocity != Vector3{} || body.angular_velocity != Vector3{})) s.moving_planes.push_back(i);
+            // As add() gathers a body (its bounding radius is the one note() took).
+            if (copied) s.proxies.add_compact(state.position, state.bounding_radius + s.reach[i].reach, i, !role.immovable, role.sphere);
+            else s.proxies.add(bodies_[i], i, 0.0, {}, s.reach[i].reach);
+            if (role.plane && (bodies_[i].velocity != Vector3{} || bodies_[i].angular_velocity != Vector3{}))
+                s.moving_planes.push_back(i);
         }
         s.broad_phase.find_pairs(s.proxies, s.pairs, false, false);  // in no particular order
         if (boxes_) leave_out_apart_pairs();
@@ -619,6 +631,16 @@ public:
         scratch_.roles[i] = {takes_part(body), body.is_immovable(), body.shape.kind == ShapeKind::sphere,
                              body.shape.kind == ShapeKind::plane};
         if (body.shape.kind == ShapeKind::plane) scratch_.normals[i] = rotate(body.orientation, body.shape.normal);
+    }
+
+    /// At the start of a step whose copies the last one left (EventScratch::copies_known):
+    /// notes again the bodies of its overlapping pairs, the only ones the discrete stages after
+    /// it answered, and so may have changed.
+    void note_after_last_step() {
+        for (const BodyPair& p : scratch_.all_pairs) {
+            note(p.first, 0.0);
+            note(p.second, 0.0);
+        }
     }
 
     /// After an event at time t: body i's impacts are predicted again with each candidate but
@@ -706,9 +728,14 @@ public:
                 body.velocity = state.velocity + gravity_ * tau;
                 if (body.angular_velocity != Vector3{}) advance_free_rotation(body, tau);
             }
-            // The loop is over: nothing to note. A sphere's bounding radius is its radius.
+            // A sphere's bounding radius is its radius.
             s.ends[i] = {body.position, role.sphere ? state.bounding_radius : -1.0};
             sum += poison(body);
+            // The loop is over; the copies become the next step's (EventScratch::copies_known),
+            // as note(i, 0) would take them, while the body is at hand: a sphere and a box
+            // take part as long as they do not spin (a plane is noted again anyway).
+            s.state[i] = {body.position, body.velocity, 0.0, state.bounding_radius};
+            s.roles[i].takes_part = role.sphere || body.angular_velocity == Vector3{};
         }
         return sum;
     }
@@ -1209,7 +1236,9 @@ ImpactsAnswered move_impact_to_impact(std::span<RigidBody> bodies, const EventMo
     loop.keep_room();
     const double poisoned = loop.finish();  // every body to the end of the step
     if (check.on && !(poisoned == 0.0)) check_finite(bodies, check.names, check.step, "event: advance");
-    return {energy_change, loop.overlapping_pairs(), scratch.broad_phase.has_grid()};
+    const std::span<const BodyPair> overlapping = loop.overlapping_pairs();
+    scratch.copies_known = true;  // finish() left them, and overlapping_pairs() the bodies to note again
+    return {energy_change, overlapping, scratch.broad_phase.has_grid()};
 }
 
 }  // namespace workbook

@@ -74,6 +74,7 @@ void World::integrate_impact_to_impact() {
     impacts_ = {};
     event_scratch_.contacts.clear();
     if (model_.respond == nullptr) {
+        event_scratch_.copies_known = false;  // the bodies move without the event loop
         advance_whole_step(bodies_, motion);
         guard("event: advance");
         return;
@@ -125,6 +126,7 @@ void World::integrate() {
     // bodies (328 bytes each) fit in no cache, and a separate pass cost as much as the grid.
     const bool discrete = settings_.contact_timing == ContactTiming::discrete;
     const bool grid = discrete && uses_grid();
+    event_scratch_.copies_known = false;  // the bodies move without the event loop
     const double poison = integrate_bodies(grid, grid && sweeps_spheres());
     proxies_fresh_ = grid;
     if (!(poison == 0.0)) guard("integrate");
@@ -224,6 +226,9 @@ void World::detect() {
         return;
     }
     // The proxies integrate() gathered, unless the bodies may have changed since.
+    // Contacts found here may be answered by respond() and correct() between two event-timed
+    // steps, among bodies the event loop does not know to have changed.
+    event_scratch_.copies_known = false;
     find_contacts(proxies_fresh_);
     proxies_fresh_ = false;
     const bool swept = sweeps_spheres();
@@ -382,6 +387,7 @@ void World::correct() {
 }
 
 void World::solve_contacts() {
+    event_scratch_.copies_known = false;  // it may change any body
     solver_report_ = {};
     response_energy_change_ = 0.0;
     if (model_.contact_solver == nullptr) return;

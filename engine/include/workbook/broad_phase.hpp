@@ -160,25 +160,34 @@ struct ProxySet {
         largest_radius = std::max(largest_radius, p.radius);
     }
 
-private:
-    void add_plane(const RigidBody& body, std::uint32_t index);
-
-    /// add() for a compact set: the same numbers, kept as a CellProxy.
-    void add_compact(const RigidBody& body, std::uint32_t index, double inflate) {
+    /// Appends to a compact set body `index` (the next one in body order), a body that is not a
+    /// plane, from what the caller knows of it: its centre, its bounding radius already widened,
+    /// whether it is movable and whether it is a sphere. The same numbers add() keeps, for a
+    /// caller that holds them and need not read the body for them (event timing's first pass).
+    void add_compact(const Vector3& centre, double radius, std::uint32_t index, bool movable, bool sphere) {
         CellProxy& p = cells.emplace_back();
-        p.x = body.position.x;
-        p.y = body.position.y;
-        p.z = body.position.z;
-        const bool sphere = body.shape.kind == ShapeKind::sphere;
-        p.radius = (sphere ? body.shape.radius : bounding_radius(body)) + inflate;
+        p.x = centre.x;
+        p.y = centre.y;
+        p.z = centre.z;
+        p.radius = radius;
         p.index = index;
-        p.movable = !body.is_immovable();
+        p.movable = movable;
         ++bounded;
         if (sphere) ++spheres;  // (a compact set has no travel to sum)
         poison += (p.x + p.y + p.z + p.radius) * 0.0;
         low.x = std::min(low.x, p.x), low.y = std::min(low.y, p.y), low.z = std::min(low.z, p.z);
         high.x = std::max(high.x, p.x), high.y = std::max(high.y, p.y), high.z = std::max(high.z, p.z);
         largest_radius = std::max(largest_radius, p.radius);
+    }
+
+private:
+    void add_plane(const RigidBody& body, std::uint32_t index);
+
+    /// add() for a compact set: the same numbers, kept as a CellProxy.
+    void add_compact(const RigidBody& body, std::uint32_t index, double inflate) {
+        const bool sphere = body.shape.kind == ShapeKind::sphere;
+        add_compact(body.position, (sphere ? body.shape.radius : bounding_radius(body)) + inflate, index,
+                    !body.is_immovable(), sphere);
     }
 };
 

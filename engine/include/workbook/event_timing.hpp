@@ -106,6 +106,17 @@ struct EventReach {
 struct EventScratch {
     std::vector<EventBody> state;          ///< per body: what a prediction reads (EventBody)
     std::vector<EventRole> roles;          ///< per body: what kind of body it is for the loop
+    /// Whether `state` and `roles` hold every body as the last step left it (its position and
+    /// velocity at the start of the next step, its kind and bounding radius), but for the
+    /// bodies of its overlapping pairs (all_pairs), which the discrete stages after it may have
+    /// changed (the loop itself notes again every body it changes, after each response, so
+    /// its copies end as the bodies are, even where a responder changed a mass). The next
+    /// step's first pass then notes again only those, and reads the others' copies rather than
+    /// the bodies: at N = 100,000 the bodies (328 bytes each) come from memory, and the first
+    /// pass read them all. Set at the end of every step; the World
+    /// clears it wherever the bodies may change otherwise (World::bodies(), its discrete
+    /// stages called on their own), and a change in the number of bodies overrides it.
+    bool copies_known = false;
     std::vector<Vector3> normals;          ///< per body: a plane's unit normal in the world (unset for other shapes)
     std::vector<EventReach> reach;         ///< per body: where it started the step, how far it may get
     /// Whether the next step uses boxes: they cost a pass over the bodies and one over the

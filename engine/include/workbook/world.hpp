@@ -168,6 +168,7 @@ public:
         proxies_fresh_ = false;
         impacts_fresh_ = false;
         at_rest_ = false;
+        event_scratch_.copies_known = false;  // EventScratch::copies_known
         return bodies_;
     }
     /// True when the last step() found nothing to move (every movable body asleep, no
