@@ -192,6 +192,8 @@ void ContactSolver::reserve(std::size_t contacts) {
     previous_.reserve(contacts);
     current_.reserve(contacts);
     soft_points_.reserve(contacts * max_contact_points);
+    bounces_.reserve(contacts * max_contact_points);
+    gap_target_.reserve(contacts * max_contact_points);
 }
 
 void ContactSolver::order_passes(std::span<const Contact> contacts, const Vector3& up) {
@@ -318,6 +320,7 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
     // of 0), it bounces now, a gap s short of touching, as Box2D's speculative points do.
     // Stopped at the gap instead, it would arrive touching at s / dt, and bounce back at that
     // speed, not its own: a ball with e = 1 dropped from 1 m kept a tenth of its energy.
+    gap_target_.assign(contacts.size() * max_contact_points, 0);
     if (speculative) {
         for (std::size_t c = 0; c < contacts.size(); ++c) {
             const Contact& contact = contacts[order_[c]];
@@ -329,6 +332,7 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
                 const double u0 = normal_velocity_at(body1, body2, contact.points[i].position, contact.normal);
                 if (speculative_point_bounces(impulses[c].points[i].bounce, u0, gap, dt)) continue;
                 impulses[c].points[i].bounce = std::max(u0, 0.0) - gap / dt;
+                gap_target_[c * max_contact_points + i] = 1;
             }
         }
     }
@@ -364,7 +368,9 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
             for (std::size_t i = 0; i < max_contact_points; ++i) {
                 double& bounce = impulses[c].points[i].bounce;
                 bounces_[c * max_contact_points + i] = bounce;
-                if (speculative && bounce < 0.0) continue;  // a gap's target holds in both phases
+                // A gap's target is no bounce: it holds in both phases, whatever its sign (a
+                // pair that separates faster than its gap closes in a step has a positive one).
+                if (gap_target_[c * max_contact_points + i] != 0) continue;
                 any_bounce = any_bounce || bounce != 0.0;
                 bounce = 0.0;
             }
@@ -395,15 +401,42 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
     // high it is, below the discs it rests on, and the sweep would push those down into the
     // pile instead of the disc up. `up` is -gravity, not a unit vector.
     const double up_length = length(up);
+    // The sweep calls the chapter's functions as the passes do: the normal impulse, then,
+    // where friction acts, friction within the cone of that normal impulse.
+    auto solve_contact = [&](RigidBody& body1, RigidBody& body2, const Contact& contact, ContactImpulses& contact_impulses,
+                             bool rubs) {
+        double largest = hooks.solve_velocity(body1, body2, contact, contact_impulses);
+        if (rubs) largest = std::max(largest, hooks.solve_friction(body1, body2, contact, contact_impulses));
+        return largest;
+    };
+    // A contact of one movable body (against an immovable body, or a frozen lower one) is
+    // that body's problem alone, and is solved to the passes' tolerance: a face's points and
+    // their friction share the body's spin, so one call leaves part of each point's change to
+    // the next (a box on a box has four points; a tall stack of boxes with friction, each
+    // left a little turning, topples). A lone point without friction is exact in one call.
+    auto solve_one_body_contact = [&](RigidBody& body1, RigidBody& body2, const Contact& contact,
+                                      ContactImpulses& contact_impulses, bool rubs) {
+        for (int call = 1;; ++call)
+            if (!(solve_contact(body1, body2, contact, contact_impulses, rubs) > settings.tolerance) ||
+                (contact.point_count == 1 && !rubs) || call >= std::max(settings.velocity_iterations, 1))
+                return;
+    };
+    auto bounces_at = [&](std::size_t c) {
+        for (std::size_t i = 0; i < max_contact_points; ++i) {
+            const std::size_t k = c * max_contact_points + i;
+            if (gap_target_[k] == 0 && bounces_[k] > 0.0) return true;
+        }
+        return false;
+    };
     auto shock_sweep = [&](std::span<const Contact> list) {
         for (std::size_t c = 0; c < list.size(); ++c) {
             const Contact& contact = list[c];
             RigidBody& body1 = first(c);
             RigidBody& body2 = second(c);
-            // Where friction acts the passes have solved the normal and friction impulses
-            // together, the friction within the cone of the normal; a sweep along the normal
-            // alone would change the normal impulse under friction that no longer matches it.
-            if (hooks.solve_friction != nullptr && body1.static_friction * body2.static_friction > 0.0) continue;
+            const bool rubs = hooks.solve_friction != nullptr && body1.static_friction * body2.static_friction > 0.0;
+            // A rubbing contact that bounces got its bounce along the normal alone, after its
+            // friction (the second phase above): friction again would undo that order.
+            if (rubs && any_bounce && bounces_at(c)) continue;
             // The normal points from body 2 to body 1: a positive lean puts body 1 above.
             const double lean = up_length > 0.0 ? dot(contact.normal, up) / up_length : 0.0;
             RigidBody* lower = nullptr;
@@ -419,7 +452,10 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
             }
             ContactImpulses& contact_impulses = impulses[c];
             if (lower == nullptr) {
-                hooks.solve_velocity(body1, body2, contact, contact_impulses);
+                if (body1.is_immovable() || body2.is_immovable())
+                    solve_one_body_contact(body1, body2, contact, contact_impulses, rubs);
+                else
+                    solve_contact(body1, body2, contact, contact_impulses, rubs);
                 continue;
             }
             const ContactImpulses saved = contact_impulses;
@@ -438,7 +474,7 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
             }
             const Vector3 velocity = upper->velocity, angular_velocity = upper->angular_velocity;
             const double before = kinetic_energy(*upper);
-            hooks.solve_velocity(body1, body2, contact, contact_impulses);
+            solve_one_body_contact(body1, body2, contact, contact_impulses, rubs);
             lower->inverse_mass = inverse_mass;
             lower->inverse_inertia_world = inverse_inertia;
             for (std::size_t i = 0; i < contact.point_count; ++i) contact_impulses.points[i].mass = saved.points[i].mass;
@@ -448,7 +484,7 @@ void ContactSolver::solve_staged(std::span<RigidBody> bodies, std::span<const Co
                 upper->velocity = velocity;
                 upper->angular_velocity = angular_velocity;
                 contact_impulses = saved;
-                hooks.solve_velocity(body1, body2, contact, contact_impulses);
+                solve_contact(body1, body2, contact, contact_impulses, rubs);
             }
         }
     };

@@ -100,14 +100,17 @@ struct ContactSolverSettings {
     /// pass, take about the square of the row's length in passes to settle. A contact whose
     /// one-sided solve would give the upper body kinetic energy (its lower neighbour moving
     /// into it faster than it comes down) is solved two-sided instead: a sweep never adds
-    /// kinetic energy. The sweeps go along the normals alone, so they leave out the contacts
-    /// where friction acts (the passes solved those with their friction), and a contact
-    /// between bodies side by side stays two-sided. Without gravity
+    /// kinetic energy. A contact with one movable body (on the ground, or on its frozen
+    /// lower body) is solved to `tolerance`, not in one call: a face's points share the
+    /// body's spin. Where friction acts the sweep answers friction after the normal, as the
+    /// passes do, except at a point that bounces (friction's phase came before its bounce).
+    /// A contact between bodies side by side stays two-sided. Without gravity
     /// there is no up, and a sweep is one more pass. Measured on the pile of discs
     /// (docs/performance.md): alone it settles a packed block of discs that the passes leave
     /// moving, but not the pile dropped into its box, whose landing puts discs deep into
     /// each other before any contact exists; with speculative contacts (below) one sweep
-    /// holds the pile's overlap within 5 mm from 400 to 20,000 discs.
+    /// holds the pile's overlap within 5 mm from 400 to 20,000 discs. With friction it holds a
+    /// stack of thirty boxes up that the passes alone let fall over.
     int shock_sweeps = 1;
     /// With shock_sweeps: the sine of the smallest lean of a contact's normal out of the
     /// horizontal for its lower body to count as immovable.
@@ -296,6 +299,7 @@ private:
     std::vector<Remembered> previous_;
     std::vector<Remembered> current_;
     std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
+    std::vector<std::uint8_t> gap_target_;  ///< 1 for a speculative point whose target only keeps its gap (no bounce)
     std::vector<Vector3> saved_velocity_;
     std::vector<Vector3> saved_angular_velocity_;
     std::vector<SoftPoint> soft_points_;  ///< max_contact_points per contact, in the contacts' order
