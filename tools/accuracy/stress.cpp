@@ -171,49 +171,44 @@ double micrometre_rise(const std::vector<RigidBody>& bodies, const Vector3& grav
     return energy;
 }
 
+/// Thirty cubes with friction (cube_with_friction()) in a column on the ground, `gap` m apart
+/// and every other one `aside` m to the side, for 6 s with chapter 6's responder; from
+/// `settled` s on, no box may stray sideways from where it started by more than `allowed` m.
+StressScene column_of_cubes(std::string name, std::string what, double gap, double aside, double settled, double allowed) {
+    const Vector3 earth{0.0, -9.81, 0.0};
+    StressScene scene;
+    scene.name = std::move(name);
+    scene.what = std::move(what);
+    scene.steps = 360;
+    scene.responder = "friction";
+    std::vector<RigidBody> bodies;
+    for (int i = 0; i < 30; ++i) bodies.push_back(cube_with_friction({i % 2 == 1 ? aside : 0.0, 0.05 + (0.1 + gap) * i, 0}));
+    bodies.push_back(ground_with_friction());
+    std::vector<Vector3> start;
+    for (const RigidBody& body : bodies) start.push_back(body.position);
+    scene.energy_allowance = micrometre_rise(bodies, earth);
+    scene.build = [bodies, earth](const ResponseModel& model) { return World(bodies, settings_with(1.0 / 60, earth), model); };
+    scene.own_check_name = "stands";
+    scene.own_check = [start, settled, allowed](const World& world) {
+        return world.time() < settled ? 0.0 : strayed(world, start, allowed);
+    };
+    return scene;
+}
+
 /// Stacks and piles, the scenes games have most, with the contact solver of chapters 5 and 6
 /// on its defaults (StressScene::responder).
 void add_resting_scenes(std::vector<StressScene>& corpus, bool full) {
     const Vector3 earth{0.0, -9.81, 0.0};
     // Thirty cubes built touching: ten times a box's width and more, the weight of 29 boxes
     // on the lowest contact. The stack must stand: no box strays sideways by 1 mm.
-    {
-        StressScene scene;
-        scene.name = "stack-30-friction";
-        scene.what = "thirty 10 cm cubes with friction 0.5 stacked touching, 6 s (responder friction)";
-        scene.steps = 360;
-        scene.responder = "friction";
-        std::vector<RigidBody> bodies;
-        for (int i = 0; i < 30; ++i) bodies.push_back(cube_with_friction({0, 0.05 + 0.1 * i, 0}));
-        bodies.push_back(ground_with_friction());
-        std::vector<Vector3> start;
-        for (const RigidBody& body : bodies) start.push_back(body.position);
-        scene.energy_allowance = micrometre_rise(bodies, earth);
-        scene.build = [bodies, earth](const ResponseModel& model) { return World(bodies, settings_with(1.0 / 60, earth), model); };
-        scene.own_check_name = "stands";
-        scene.own_check = [start](const World& world) { return strayed(world, start, 1e-3); };
-        corpus.push_back(scene);
-    }
+    corpus.push_back(column_of_cubes("stack-30-friction", "thirty 10 cm cubes with friction 0.5 stacked touching, 6 s (responder friction)",
+                                     0.0, 0.0, 0.0, 1e-3));
     // The same cubes dropped 2 cm apart, every other one 3 mm aside: the column lands on
     // itself at up to 2.5 m/s. Once landed (2 s) it must stand where it landed: no box more
     // than 1 cm from where it started sideways (the offsets are 3 mm).
-    {
-        StressScene scene;
-        scene.name = "column-30-dropped";
-        scene.what = "thirty 10 cm cubes with friction 0.5 dropped 2 cm apart, every other one 3 mm aside, 6 s (responder friction)";
-        scene.steps = 360;
-        scene.responder = "friction";
-        std::vector<RigidBody> bodies;
-        for (int i = 0; i < 30; ++i) bodies.push_back(cube_with_friction({i % 2 == 1 ? 0.003 : 0.0, 0.05 + 0.12 * i, 0}));
-        bodies.push_back(ground_with_friction());
-        std::vector<Vector3> start;
-        for (const RigidBody& body : bodies) start.push_back(body.position);
-        scene.energy_allowance = micrometre_rise(bodies, earth);
-        scene.build = [bodies, earth](const ResponseModel& model) { return World(bodies, settings_with(1.0 / 60, earth), model); };
-        scene.own_check_name = "stands";
-        scene.own_check = [start](const World& world) { return world.time() < 2.0 ? 0.0 : strayed(world, start, 0.01); };
-        corpus.push_back(scene);
-    }
+    corpus.push_back(column_of_cubes("column-30-dropped",
+                                     "thirty 10 cm cubes with friction 0.5 dropped 2 cm apart, every other one 3 mm aside, 6 s (responder friction)",
+                                     0.02, 0.003, 2.0, 0.01));
     // A pile: balls of 5 cm thrown at 1 m/s in random directions from a loose grid into a
     // closed box, e = 0, frictionless (they flow like a liquid until they lie packed). Once
     // landed (3 s), no two balls may overlap by more than 5 mm (the slop is 2 mm), measured
