@@ -48,7 +48,7 @@ def main():
         and round(shift_peak["t"], 1) == 1.1,
         "from 1.7 s on the pile moves with less than 1 J": max(r["kinetic_linear"] for r in creep) < 1.0,
         "from 2.2 s on with less than 0.01 J": max(r["kinetic_linear"] for r in quiet) < 0.01,
-        "at 3 s, with 2 µJ left, it has not yet fallen asleep": round(end["t"], 6) == 3.0
+        "at 3 s, with 2e-6 J left, it has not yet fallen asleep": round(end["t"], 6) == 3.0
         and round(end["kinetic_linear"] * 1e6) == 2,
         "its deepest overlap the 2 mm slop": round(slop * 1000) == 2
         and all(round(r["penetration_max"] * 1000) == 2 for r in quiet),
