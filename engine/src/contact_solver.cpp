@@ -117,7 +117,15 @@ std::array<Vector3, 2> friction_tangents(const Vector3& normal) {
     return {t1, cross(normal, t1)};
 }
 
-void ContactSolver::recall(std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of,
+namespace {
+
+/// Whether `body` has no corners or edges (a sphere or a plane): its contacts have one point,
+/// which slides with the bodies and never jumps to another feature.
+bool smooth(const RigidBody& body) { return body.shape.kind == ShapeKind::sphere || body.shape.kind == ShapeKind::plane; }
+
+}  // namespace
+
+void ContactSolver::recall(std::span<const RigidBody> bodies, std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of,
                            const ContactSolverSettings& settings, ContactSolverReport& report) {
     const double reach2 = settings.match_distance * settings.match_distance;
     for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -129,6 +137,18 @@ void ContactSolver::recall(std::span<const Contact> contacts, std::span<ContactI
         if (found == previous_.end() || found->pair != pair_key(contact)) continue;
         // A pair whose normal turned a lot (two balls that passed each other) starts afresh.
         if (dot(found->normal, contact.normal) < 0.9) continue;
+        // Two smooth bodies touch at one point, the same point however far it slid since the
+        // last step: it is found by the pair, not by where it lies. Matched by distance, the
+        // point of a ball sliding faster than match_distance a step started cold while the
+        // other contacts of the same ball kept their impulses; in a pile, whose force chains
+        // carry tens of balls' weight, that warm start kicked the ball by the unmatched
+        // neighbour's share (docs/performance.md).
+        if (smooth(bodies[contact.body1]) && smooth(bodies[contact.body2]) && contact.point_count == 1 && found->point_count == 1) {
+            impulses.points[0].normal = found->normal_impulses[0];
+            impulses.points[0].friction = found->friction_impulses[0];
+            ++report.warm_started_points;
+            continue;
+        }
         for (std::size_t i = 0; i < contact.point_count; ++i) {
             double nearest = reach2;
             for (std::size_t k = 0; k < found->point_count; ++k) {
@@ -267,7 +287,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     const bool speculative = settings.speculative_distance > 0.0;
     if (settings.substeps > 0) {
         impulses_.assign(contacts.size(), ContactImpulses{});
-        recall(contacts, impulses_, settings, report);
+        recall(bodies, contacts, impulses_, settings, report);
         const std::span<const Contact> seen = speculative ? clamp_depths(contacts, seen_) : contacts;
         solve_in_substeps(bodies, contacts, seen, hooks, settings, knobs, dt, gravity, gravity_position_factor, woken, report);
         remember(contacts);
@@ -279,7 +299,7 @@ ContactSolverReport ContactSolver::solve(std::span<RigidBody> bodies, std::span<
     // back: copies in the order of the passes, not scattered over detection's list and the
     // world's bodies, where a pile's passes spent much of their time waiting on memory.
     stage(contacts, speculative);
-    recall(staged_, staged_impulses_, settings, report);
+    recall(bodies, staged_, staged_impulses_, settings, report);
     solve_staged(gather(bodies), contacts, hooks, settings, knobs, dt, up, report);
     put_back(bodies);
     remember(contacts);

@@ -709,3 +709,43 @@ TEST_CASE("Speculative contacts: the grid finds the pairs a test of every pair f
         }
     }
 }
+
+namespace {
+
+/// A ball of 20 kg resting on a ball of 1 kg on a frictionless ground, both sliding along it at
+/// `speed` (m/s), solved in a few passes without a shock sweep: the warm start alone carries
+/// the heavy ball's weight from one step to the next (cold, three passes leave most of it
+/// unsolved: each pass hands the light ball a share of what the heavy one still asks).
+World heavy_on_light(double speed) {
+    std::vector<RigidBody> bodies{make_sphere(1.0, 0.05, {0, 0.05, 0}), make_sphere(20.0, 0.05, {0, 0.1495, 0})};
+    for (RigidBody& ball : bodies) ball.velocity = {speed, 0, 0};
+    bodies.push_back(make_immovable_plane({0, 1, 0}, {0, 0, 0}));
+    WorldSettings settings{1.0 / 60, {0, -9.81, 0}};
+    settings.position_correction = {0.2, 0.001};
+    settings.contact_solver = {.velocity_iterations = 3, .shock_sweeps = 0, .sleeping = false};
+    return World(std::move(bodies), settings, model);
+}
+
+}  // namespace
+
+TEST_CASE("Warm start: balls sliding faster than the match distance a step rest on each other as balls standing still do",
+          "[engine][contact-solver]") {
+    // At 1.5 m/s every contact point moves 2.5 cm a step, more than match_distance (1 cm). A pair
+    // of balls, or a ball and a plane, touches at one point, found by the pair: the sliding
+    // column is warm started as the standing one is, and its vertical motion is the same step
+    // for step (the sideways speed changes nothing along the vertical normals). Matched by
+    // distance, the sliding column started cold every step: from the second step on its balls'
+    // vertical speeds differed from the standing column's by 0.019 m/s and their heights by
+    // 0.26 mm (measured).
+    World standing = heavy_on_light(0.0);
+    World sliding = heavy_on_light(1.5);
+    for (int step = 0; step < 60; ++step) {
+        standing.step();
+        sliding.step();
+        for (std::size_t i = 0; i < 2; ++i) {
+            CHECK(std::abs(sliding.bodies()[i].velocity.y - standing.bodies()[i].velocity.y) <= 1e-12);
+            CHECK(std::abs(sliding.bodies()[i].position.y - standing.bodies()[i].position.y) <= 1e-12);
+        }
+    }
+    CHECK(sliding.contact_solver_report().warm_started_points == 2);
+}

@@ -60,8 +60,9 @@ struct ContactSolverSettings {
     /// A point that approaches slower than this (m/s) gets no bounce: resting bodies would
     /// otherwise bounce on gravity's own speed of one step (g dt = 0.16 m/s at 60 Hz).
     double bounce_threshold = 0.5;
-    /// Old and new points of the same pair are the same point (for warm starting) when they
-    /// lie closer than this, m.
+    /// Old and new points of the same pair with a box are the same point (for warm starting)
+    /// when they lie closer than this, m. A pair of spheres and planes has one point, matched
+    /// by the pair alone.
     double match_distance = 0.01;
     /// Most overlap a point's bias asks to remove in one step, m: a deep overlap pushed out at
     /// once would push bodies through their neighbours.
@@ -263,9 +264,10 @@ private:
                            const Vector3& gravity, double gravity_position_factor, std::span<const std::uint8_t> woken,
                            ContactSolverReport& report);
     /// Puts into `impulses_of` (one per contact, in the order of `contacts`) the impulses last
-    /// remembered for the same points.
-    void recall(std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of, const ContactSolverSettings& settings,
-                ContactSolverReport& report);
+    /// remembered for the same points: the one point of a pair of smooth bodies (spheres and
+    /// planes) by the pair, the points of a pair with a box by where they lie (match_distance).
+    void recall(std::span<const RigidBody> bodies, std::span<const Contact> contacts, std::span<ContactImpulses> impulses_of,
+                const ContactSolverSettings& settings, ContactSolverReport& report);
     /// Sets order_: the contacts from the bottom up along `up`.
     void order_passes(std::span<const Contact> contacts, const Vector3& up);
     /// Copies `contacts` in the order of the passes into staged_, as the chapter's functions
