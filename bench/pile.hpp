@@ -84,7 +84,7 @@ struct PileKnobs {
 
 /// The workbook's other scheme on the pile: the soft step (ContactSolverSettings::substeps) at
 /// the stiffest contact springs 16 substeps resolve (240 Hz) with one relax pass and a slop of
-/// 0.5 mm, the setting docs/performance.md measures beside the defaults (a spring's give under
+/// 0.4 mm, the setting docs/performance.md measures beside the defaults (a spring's give under
 /// load comes on top of the slop, so the soft step keeps the slop small);
 /// `workbook-pile workbook-soft N` runs it.
 inline PileKnobs soft_step_knobs() {
@@ -92,7 +92,7 @@ inline PileKnobs soft_step_knobs() {
     knobs.substeps = 16;
     knobs.hertz = 240.0;
     knobs.relax_passes = 1;
-    knobs.slop = 0.0005;
+    knobs.slop = 0.0004;
     return knobs;
 }
 

@@ -22,7 +22,7 @@ then not started. With --record it also copies the table, the CSV and the SVG in
 bench/results/; --rewrite runs nothing and writes the table and the figure again from a run's
 CSV. --quick is the small run the tests make (16 and 100 discs, 3 s). `--engines` picks engines;
 it may also name workbook-soft, the workbook's other scheme (the soft step of chapter 5's page,
-16 substeps of 240 Hz with one relax pass and a slop of 0.5 mm), run like the workbook to the
+16 substeps of 240 Hz with one relax pass and a slop of 0.4 mm), run like the workbook to the
 largest N and drawn dashed; the table then checks the goals for it too, in a table of its own.
 
 Times are processor time of the timed steps (std::clock; every engine runs on one thread);
