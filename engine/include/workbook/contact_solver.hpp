@@ -300,6 +300,7 @@ private:
     std::vector<double> height_;        ///< each contact's height along `up`, for the order
     std::vector<Remembered> previous_;
     std::vector<Remembered> current_;
+    std::vector<std::array<std::uint64_t, 2>> sort_keys_;  ///< (pair, contact) for remember()'s sort
     std::vector<double> bounces_;  ///< each point's bounce, put aside while friction's phase runs
     std::vector<std::uint8_t> gap_target_;  ///< 1 for a speculative point whose target only keeps its gap (no bounce)
     std::vector<Vector3> saved_velocity_;
