@@ -29,22 +29,18 @@ option(WORKBOOK_SIMULATOR
 FetchContent_Declare(Catch2
   URL https://github.com/catchorg/Catch2/archive/refs/tags/v3.7.1.tar.gz
   URL_HASH SHA256=c991b247a1a0d7bb9c39aa35faf0fe9e19764213f28ffba3109388e62ee0269c
-  SYSTEM  # its headers are not the workbook's: no warning of theirs is shown
   FIND_PACKAGE_ARGS 3)
 FetchContent_Declare(fmt
   URL https://github.com/fmtlib/fmt/archive/refs/tags/11.0.2.tar.gz
   URL_HASH SHA256=6cb1e6d37bdcb756dbbe59be438790db409cdb4868c66e888d5df9f13f7c027f
-  SYSTEM
   FIND_PACKAGE_ARGS)
 FetchContent_Declare(nlohmann_json
   URL https://github.com/nlohmann/json/archive/refs/tags/v3.11.3.tar.gz
   URL_HASH SHA256=0d8ef5af7f9794e3263480193c491549b2ba6cc74bb018906202ada498a79406
-  SYSTEM
   FIND_PACKAGE_ARGS 3.10)
 FetchContent_Declare(CLI11
   URL https://github.com/CLIUtils/CLI11/archive/refs/tags/v2.4.2.tar.gz
   URL_HASH SHA256=f2d893a65c3b1324c50d4e682c0cdc021dd0477ae2c048544f39eed6654b699a
-  SYSTEM
   FIND_PACKAGE_ARGS)
 
 # The libraries' own options when they are built here: no tests, docs or install rules of theirs.
@@ -70,10 +66,27 @@ set(_workbook_target_nlohmann_json nlohmann_json::nlohmann_json)
 set(_workbook_target_CLI11 CLI11::CLI11)
 set(_workbook_version_Catch2 3)
 set(_workbook_version_nlohmann_json 3.10)
+# The targets a library built here defines, marked SYSTEM below.
+set(_workbook_built_Catch2 Catch2 Catch2WithMain)
+set(_workbook_built_fmt fmt)
+set(_workbook_built_nlohmann_json nlohmann_json)
+set(_workbook_built_CLI11 CLI11)
 macro(workbook_use_libraries)
   foreach(_library ${ARGN})
     if(WORKBOOK_FETCH_MISSING)
       FetchContent_MakeAvailable(${_library})
+      # A library built here is SYSTEM: its headers are not the workbook's, so no warning of
+      # theirs is shown. Set on its targets rather than by FetchContent_Declare's SYSTEM, which
+      # CMake 3.25.0 and 3.25.1 pass on to the download's sub-build, where it is read as part
+      # of URL_HASH and every download fails ("URL_HASH ... must be ALGO=value").
+      foreach(_built ${_workbook_built_${_library}})
+        if(TARGET ${_built})
+          get_target_property(_imported ${_built} IMPORTED)
+          if(NOT _imported)
+            set_target_properties(${_built} PROPERTIES SYSTEM ON)
+          endif()
+        endif()
+      endforeach()
     else()
       find_package(${_library} ${_workbook_version_${_library}} QUIET)
     endif()

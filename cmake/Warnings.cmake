@@ -1,8 +1,9 @@
-# One place for the warning flags of the workbook's own targets; third-party headers come
-# in as SYSTEM includes through their imported targets (or FetchContent's SYSTEM), so they
-# never trip -Werror. GCC and Clang (also Apple's) take the -W flags; MSVC gets its own,
-# and only MSVC does. (WORKBOOK_WARNINGS_AS_ERRORS, in the top-level CMakeLists.txt, is OFF
-# in the student presets: a student's build shows every warning and fails on none.)
+# One place for the warning flags of the workbook's own targets; third-party headers come in
+# as SYSTEM includes through their imported targets (or the SYSTEM property of a library built
+# here, cmake/Dependencies.cmake), so they never trip -Werror. GCC and Clang (also Apple's)
+# take the -W flags; MSVC gets its own, and only MSVC does. (WORKBOOK_WARNINGS_AS_ERRORS, in
+# the top-level CMakeLists.txt, is OFF in the student presets: a student's build shows every
+# warning and fails on none.)
 include(CheckCXXCompilerFlag)
 if(MSVC)
   # For every target, the libraries' too: /utf-8 reads the sources and writes the strings as
