@@ -45,8 +45,8 @@ from bench.speed import ENGINES, RESULTS, STYLE, STYLES, TITLES, load_average, m
 # engine of this bench only, run when --engines names it, beside the solver's defaults.
 SOFT = "workbook-soft"
 ENGINES_HERE = ENGINES + [SOFT]
-TITLES = TITLES | {SOFT: "workbook, soft step"}
-STYLES = STYLES | {SOFT: 11}  # the workbook's colour; drawn dashed (SOFT_DASH)
+TITLES = {**TITLES, SOFT: "workbook, soft step"}
+STYLES = {**STYLES, SOFT: 11}  # the workbook's colour; drawn dashed (SOFT_DASH)
 SOFT_DASH = " dt 2"
 
 SIZES = [400, 1000, 2000, 5000, 10000, 20000, 50000, 100000]
@@ -97,7 +97,7 @@ def measure(binary, engines, sizes, seconds, budget, repeat, peers_up_to):
     over = set()   # engines over budget at some N: not run at a larger one
     for n in sizes:
         for engine in engines:
-            row = {column: "" for column in COLUMNS} | {"engine": engine, "n": n, "steps": steps}
+            row = {**{column: "" for column in COLUMNS}, "engine": engine, "n": n, "steps": steps}
             rows.append(row)
             if engine not in ("workbook", SOFT) and n > peers_up_to:
                 row["status"] = "not run"

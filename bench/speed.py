@@ -72,7 +72,7 @@ def run_once(gas, engine, n, steps, timeout):
             return None
         time.sleep(0.02)
     out, err = process.stdout.read(), process.stderr.read()
-    process.returncode = os.waitstatus_to_exitcode(status)
+    process.returncode = os.WEXITSTATUS(status) if os.WIFEXITED(status) else -os.WTERMSIG(status)
     lines = [line for line in out.splitlines() if line.startswith(engine + ",")]
     if process.returncode != 0 or not lines:
         print(f"  {engine} N={n}: failed ({err.strip().splitlines()[-1] if err.strip() else process.returncode})",

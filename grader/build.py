@@ -6,6 +6,7 @@ submission's own files); after compiling, the symbols the object defines (only t
 header's functions and internal helpers). Compiling, listing symbols and linking run in the
 sandbox, and compiler output is shown only where it speaks of the student's file or a public
 header, so no text from outside the submission reaches the student."""
+from __future__ import annotations  # `X | None` annotations on Python 3.8 and 3.9
 import dataclasses
 from dataclasses import dataclass
 import os

@@ -1,6 +1,7 @@
 """The grader kit: what the instructor's build left in <build>/grader/kit.json, and the
 test cases of each chapter, listed once from its trusted checker (the public and hidden
 tests linked with stand-ins that forward each call to the student's process)."""
+from __future__ import annotations  # `X | None` annotations on Python 3.8 and 3.9
 from dataclasses import dataclass, field, replace
 import itertools
 import json
@@ -49,7 +50,7 @@ class Chapter:
 
     @property
     def namespace(self):
-        return "workbook::" + self.source.removesuffix(".cpp")
+        return "workbook::" + (self.source[:-len(".cpp")] if self.source.endswith(".cpp") else self.source)
 
     @property
     def title(self):
@@ -158,6 +159,15 @@ def exposed_secrets(kit):
     return [str(p) for p in candidates if readable_by_others(p)]
 
 
+def _relative_to(path, folder):
+    """`path` relative to `folder`, or None when it is not inside (Path.is_relative_to, which
+    Python 3.8 lacks)."""
+    try:
+        return pathlib.Path(path).relative_to(folder)
+    except ValueError:
+        return None
+
+
 def snapshot(kit, root):
     """A copy of what compiling and linking a submission reads (headers, objects, libraries
     not under /usr), world-readable, under `root`; and the kit that points at it.
@@ -171,8 +181,7 @@ def snapshot(kit, root):
     include_dirs = []
     for index, folder in enumerate(kit.include_dirs):
         # At their place in the tree, so that a compiler error names engine/include/...
-        inside = pathlib.Path(folder).is_relative_to(kit.source_dir)
-        target = root / (pathlib.Path(folder).relative_to(kit.source_dir) if inside else f"include{index}")
+        target = root / (_relative_to(folder, kit.source_dir) or f"include{index}")
         shutil.copytree(folder, target, ignore=_not_headers)
         include_dirs.append(str(target))
 

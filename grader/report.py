@@ -1,5 +1,6 @@
 """Scores and writes them out: results.json in Gradescope's format, the terminal summary and
 the gradebook CSV. Knows nothing about compiling or running."""
+from __future__ import annotations  # `X | None` annotations on Python 3.8 and 3.9
 from dataclasses import dataclass, field
 import csv
 import json

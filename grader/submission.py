@@ -146,7 +146,8 @@ def _read_tar(path):
                 if not info.isfile():
                     continue
                 data = archive.extractfile(info).read(MAX_SOURCE_BYTES + 1)
-                members.append((info.name.strip("/").removeprefix("./"), info.size, lambda data=data: data))
+                name = info.name.strip("/")
+                members.append((name[2:] if name.startswith("./") else name, info.size, lambda data=data: data))
                 if len(members) > MAX_MEMBERS:
                     break
     finally:

@@ -114,7 +114,7 @@ def script_for(family, data):
 
 def draw(csv_path):
     data = rows(csv_path)
-    family = csv_path.stem.removeprefix("pareto-")
+    family = csv_path.stem[len("pareto-"):]
     body = script_for(family, data)
     script = []
     for ext in FORMATS:
@@ -129,7 +129,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("folder", type=Path, help="where workbook-accuracy bench wrote its CSV files")
     args = parser.parse_args()
-    families = [p for p in sorted(args.folder.glob("pareto-*.csv")) if p.stem.removeprefix("pareto-") in TITLES]
+    families = [p for p in sorted(args.folder.glob("pareto-*.csv")) if p.stem[len("pareto-"):] in TITLES]
     if not families:
         sys.exit(f"accuracy.py: no family CSV in {args.folder} (run workbook-accuracy bench --out {args.folder})")
     for path in families:

@@ -616,7 +616,7 @@ def check_isolation(test, out, results, stdout, fresh_uids):
     """What the hostile submissions that spy, fill /tmp or hold memory in children must
     not achieve, in either mode; and that names from an archive reach no output raw."""
     spy = results["hostile-spy-on-cases"]
-    hidden_names = [t["name"].split(" · ")[-1].removesuffix(" (hidden test)") for t in spy["tests"]
+    hidden_names = [t["name"].split(" · ")[-1][:-len(" (hidden test)")] for t in spy["tests"]
                     if t["name"].endswith("(hidden test)")]
     visible = "\n".join(failed_outputs(spy, visible=True))
     test.assertIn("inputs", visible, "the spy did not run")
