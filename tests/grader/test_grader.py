@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Trust in the grader: grades the reference, the untouched skeleton, every mutant
-(tests/mutants/<chapter>/<name>/) and every hostile submission (tests/hostile/<name>/) in ONE
-batch, then checks the scores against each expect.json, the output formats, that hidden
+"""Trust in the grader: grades the reference, the untouched skeleton, every correct variant
+and two mistakes a chapter (tests/mutants/<chapter>/<name>/) and every hostile submission
+(tests/hostile/<name>/) in ONE batch, then checks the scores against each expect.json, the output formats, that hidden
 tests leak no source, that regrading is deterministic, and that the Gradescope zip works
 against a simulated /autograder tree.
 
@@ -77,7 +77,7 @@ class Batch:
             # The sandbox derives its fresh uids from the grader's pid; the fork-loop check
             # looks at those alone, so another grader running on the machine cannot fail it.
             self.grader_pid = grader.pid
-            stdout, stderr = grader.communicate(timeout=900)
+            stdout, stderr = grader.communicate(timeout=1700)
         self.run = subprocess.CompletedProcess(grader.args, grader.returncode, stdout, stderr)
         self.seconds = time.monotonic() - started
         with open(self.out / "gradebook.csv", newline="") as file:
@@ -121,14 +121,25 @@ class Batch:
         self.paths.append(self.subs / "archive-bomb.tar.gz")
         unlinked = self._folder("does-not-link", {})  # compiles, but defines none of the functions
         (unlinked / source_name(chapters[0])).write_text(f'#include "{chapters[0]}.hpp"\n')
-        # Through the whole grader: the mutants marked for it (every correct variant and a few
-        # mistakes of each kind). All of them, at several seeds, run in mutants.seeds
-        # (tests/mutants/check_seeds.py), which is much faster than one sandboxed process pair per case.
+        # Through the whole grader: every correct variant and, per chapter, two mistakes (one
+        # that loses one step, one that loses several), the others marked "through_grader":
+        # false. Every mutant's steps and feedback, at two seeds, are checked by
+        # grader.mutants_at_two_seeds (tests/mutants/check_seeds.py), much faster than one
+        # sandboxed process pair per test case; here the question is whether the grader's
+        # wire, scoring and feedback give the same verdicts.
+        mistakes = {}
         for mutant in sorted((ROOT / "tests" / "mutants").glob("*/*/expect.json")):
-            if not json.loads(mutant.read_text()).get("through_grader", True):
+            expect = json.loads(mutant.read_text())
+            if not expect.get("through_grader", True):
                 continue
-            name = f"mutant-{mutant.parent.parent.name}-{mutant.parent.name}"
-            self._add_expected(name, mutant.parent, mutant.parent.parent.name)
+            chapter = mutant.parent.parent.name
+            if expect["loses_steps"]:
+                mistakes.setdefault(chapter, []).append(len(expect["loses_steps"]))
+            self._add_expected(f"mutant-{chapter}-{mutant.parent.name}", mutant.parent, chapter)
+        for chapter in chapters:
+            lost = sorted(mistakes.get(chapter, []))
+            assert lost and lost[0] == 1 and lost[-1] > 1, \
+                f"{chapter}: the grader's batch needs a mistake that loses one step and one that loses several"
         for hostile in sorted((ROOT / "tests" / "hostile").glob("*/expect.json")):
             self._add_expected(f"hostile-{hostile.parent.name}", hostile.parent, None)
         self._names_archive(self.subs / f"{NAMES_ARCHIVE}.zip")

@@ -10,7 +10,8 @@ faster, so that it can afford ten seeds: per mutant it compiles the composed sub
 with the kit's recipe, links it with the chapter's server objects, and runs the chapter's
 trusted checker over all of the chapter's test cases in one process pair per seed, without
 the sandbox (the mutants are the workbook's own code). A step is lost when any of its test
-cases fails. Prints one line per mutant and exits 1 when any mutant misses at any seed."""
+cases fails; a mutant whose expect.json names a "feedback" must show it in a failure.
+Prints one line per mutant and exits 1 when any mutant misses at any seed."""
 import argparse
 import json
 import os
@@ -24,6 +25,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 from tests.grader.compose import compose  # noqa: E402
+from tools import catch_xml  # noqa: E402
 
 STEP_TAG = re.compile(r"\[step:(\d+):")
 
@@ -49,7 +51,8 @@ def build(kit, chapter, source_text, folder):
 
 
 def lost_steps(chapter, binary, seed, folder):
-    """The steps with a failing test case at `seed`, and the first failure's text per step."""
+    """The steps with a failing test case at `seed`, and the first failure's text per step;
+    and the failures' texts as the grader shows them (tools/catch_xml.py)."""
     report = folder / f"report-{seed}.xml"
     calls_read, calls_write = os.pipe()
     answers_read, answers_write = os.pipe()
@@ -75,7 +78,8 @@ def lost_steps(chapter, binary, seed, folder):
         step = int(STEP_TAG.search(case.get("tags", "")).group(1))
         text = " ".join(" ".join(e.itertext()) for e in case.iter() if e.tag in ("Failure", "Exception", "Expression"))
         lost.setdefault(step, f"{case.get('name')}: {' '.join(text.split())[:600]}")
-    return lost
+    shown = ["\n".join(case.failures) for case in catch_xml.parse(report.read_bytes()) if not case.passed]
+    return lost, shown
 
 
 def check(kit, chapters, mutant, seeds):
@@ -90,10 +94,12 @@ def check(kit, chapters, mutant, seeds):
         folder = pathlib.Path(tmp)
         binary = build(kit, chapter, text, folder)
         for seed in seeds:
-            lost = lost_steps(chapter, binary, seed, folder)
+            lost, shown = lost_steps(chapter, binary, seed, folder)
             if set(lost) != wanted:
                 extra = {s: lost[s] for s in set(lost) - wanted}
                 misses.append((seed, sorted(lost), extra))
+            elif expect.get("feedback") and not any(expect["feedback"] in text for text in shown):
+                misses.append((seed, sorted(lost), {0: f"no failure says '{expect['feedback']}'"}))
     return f"{chapter_id}/{mutant.name}", wanted, misses
 
 
@@ -127,7 +133,7 @@ def main():
                 for seed, lost, extra in misses:
                     print(f"        seed {seed}: lost {lost}", flush=True)
                     for step, text in extra.items():
-                        print(f"          step {step}: {text}", flush=True)
+                        print(f"          {f'step {step}' if step else 'feedback'}: {text}", flush=True)
             else:
                 print(f"ok    {name}: loses {sorted(wanted)} at seeds {args.seeds}", flush=True)
     for chapter, (total, bad) in sorted(counts.items()):
