@@ -14,7 +14,9 @@ import os
 import pathlib
 import re
 import subprocess
+import sys
 import tempfile
+import time
 import unittest
 
 from grader import pack_student
@@ -60,8 +62,11 @@ class OffDebian(unittest.TestCase):
         return dict(os.environ, PATH=path_without(self.root / name, PACKAGE_MANAGERS | set(hidden)), **extra)
 
     def workbook(self, folder, env, *args, timeout=120):
-        return subprocess.run([str(folder / "workbook"), *args], cwd=folder, env=env, capture_output=True, text=True,
-                              timeout=timeout)
+        started = time.monotonic()
+        run = subprocess.run([str(folder / "workbook"), *args], cwd=folder, env=env, capture_output=True, text=True,
+                             timeout=timeout)
+        print(f"./workbook {' '.join(args)}: {time.monotonic() - started:.0f} s", file=sys.stderr, flush=True)
+        return run
 
     def test_all_tools_there_and_no_apt_goes_on_quietly(self):
         run = self.workbook(ROOT, self.env("all", set()), "setup")
