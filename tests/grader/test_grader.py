@@ -281,6 +281,11 @@ class GraderTest(unittest.TestCase):
                    TIME_LIMIT, "--quiet", *paths]
         with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                               start_new_session=True, env=GRADE_ENV) as grader:
+            # Grading starts right after this line; on a busy machine the grader may take
+            # seconds to get there (Python's start, the kit, the sandbox's probe).
+            header = ""
+            while not header.startswith("Isolation:") and grader.poll() is None:
+                header = grader.stdout.readline()
             time.sleep(3)
             os.killpg(grader.pid, signal.SIGINT)
             stdout, stderr = grader.communicate(timeout=60)
