@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Trust in the grader: grades the reference, the untouched skeleton, every correct variant
 and two mistakes a chapter (tests/mutants/<chapter>/<name>/) and every hostile submission
-(tests/hostile/<name>/) in ONE batch, then checks the scores against each expect.json, the output formats, that hidden
-tests leak no source, that regrading is deterministic, and that the Gradescope zip works
-against a simulated /autograder tree.
+(tests/hostile/<name>/) in ONE batch, then checks the scores against each expect.json, the
+output formats, that hidden tests leak no source, that regrading is deterministic, and that
+the Gradescope zip works against a simulated /autograder tree.
 
     python3 -m tests.grader.test_grader --build-dir build/dev   (from the workbook's folder; ctest runs it: label grader)"""
 import argparse

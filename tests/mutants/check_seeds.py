@@ -20,14 +20,13 @@ import re
 import subprocess
 import sys
 import tempfile
-import xml.etree.ElementTree as ElementTree
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 from tests.grader.compose import compose  # noqa: E402
 from tools import catch_xml  # noqa: E402
 
-STEP_TAG = re.compile(r"\[step:(\d+):")
+STEP_TAG = re.compile(r"step:(\d+):")  # a step's tag, [step:3:prepare]
 
 
 def seeds_from(text):
@@ -51,8 +50,8 @@ def build(kit, chapter, source_text, folder):
 
 
 def lost_steps(chapter, binary, seed, folder):
-    """The steps with a failing test case at `seed`, and the first failure's text per step;
-    and the failures' texts as the grader shows them (tools/catch_xml.py)."""
+    """At `seed`: {step with a failing test case: that case and its text}, and the text of
+    every failing case as the grader shows it (tools/catch_xml.py reads both)."""
     report = folder / f"report-{seed}.xml"
     calls_read, calls_write = os.pipe()
     answers_read, answers_write = os.pipe()
@@ -70,15 +69,14 @@ def lost_steps(chapter, binary, seed, folder):
     finally:
         student.kill()
         student.wait()
-    lost = {}
-    for case in ElementTree.parse(report).getroot().iter("TestCase"):
-        result = case.find("OverallResult")
-        if result is not None and result.get("success") == "true":
+    lost, shown = {}, []
+    for case in catch_xml.parse(report.read_bytes()):
+        if case.passed:
             continue
-        step = int(STEP_TAG.search(case.get("tags", "")).group(1))
-        text = " ".join(" ".join(e.itertext()) for e in case.iter() if e.tag in ("Failure", "Exception", "Expression"))
-        lost.setdefault(step, f"{case.get('name')}: {' '.join(text.split())[:600]}")
-    shown = ["\n".join(case.failures) for case in catch_xml.parse(report.read_bytes()) if not case.passed]
+        step = next(int(m.group(1)) for m in map(STEP_TAG.match, case.tags) if m)
+        text = "\n".join(case.failures)
+        lost.setdefault(step, f"{case.name}: {' '.join(text.split())[:600]}")
+        shown.append(text)
     return lost, shown
 
 
