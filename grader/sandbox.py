@@ -47,7 +47,7 @@ SAFE_PATH = "/usr/local/bin:/usr/bin:/bin"
 @dataclass
 class Limits:
     wall_seconds: float = 10.0
-    memory_bytes: int = 1 << 30          # address space per process; resident memory of the run as a whole
+    memory_bytes: int = 1 << 30          # address space per process; memory held by the run as a whole
                                          # when it has a uid of its own (ignored for sanitizer builds)
     file_bytes: int = 16 << 20           # largest file the command may write (the report)
     processes: int = 64                  # per sandbox (bwrap) or per uid (rlimits)
@@ -310,15 +310,16 @@ def _supervise(command, cwd, limits, run_as, env, stdin_fd=None, pass_fds=(), wa
     try:
         open_pipe = True
         while open_pipe:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                result.timed_out = process.poll() is None
-                break
+            # Memory and disk first: a run over either limit when its time runs out is told so.
             if watch and _disk_used(watch) + (_shared_used(uid) if shared else 0) > limits.disk_bytes:
                 result.disk_full = True
                 break
             if uid is not None and limits.address_space_limit and _memory_of(uid) > limits.memory_bytes:
                 result.memory_full = True
+                break
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                result.timed_out = process.poll() is None
                 break
             for _ in selector.select(timeout=min(remaining, 0.1 if watching else 0.5)):
                 chunk = os.read(descriptor, 65536)
@@ -446,18 +447,18 @@ def _alive_of(uid):
 
 
 def _memory_of(uid):
-    """Resident bytes of all the processes of `uid` together."""
-    pages = 0
+    """Bytes that all the processes of `uid` hold together: resident and swapped out (on a
+    machine with swap, memory held and left untouched would otherwise drop out of sight)."""
+    kib = 0
     for pid in _pids_of(uid):
         try:
-            with open(f"/proc/{pid}/statm", "rb") as file:
-                pages += int(file.read().split()[1])
+            with open(f"/proc/{pid}/status", "rb") as file:
+                for line in file:
+                    if line.startswith((b"VmRSS:", b"VmSwap:")):
+                        kib += int(line.split()[1])
         except (OSError, IndexError, ValueError):
             continue
-    return pages * PAGE_BYTES
-
-
-PAGE_BYTES = os.sysconf("SC_PAGE_SIZE")
+    return kib << 10
 
 
 def _left_behind(uid):

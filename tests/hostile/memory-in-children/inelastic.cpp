@@ -1,5 +1,6 @@
-// Hostile submission for the grader's tests: energy_lost() starts two child processes that each fill 160 MiB: under the limit of a single process, over the limit of the test case together (the grader's test gives 256 MiB), and waits for them
+// Hostile submission for the grader's tests: energy_lost() starts two child processes that each fill 64 MiB and say so: under the limit of a single process, over the limit of the test case together (the grader's test gives 96 MiB), and waits for them
 // Only what differs from the reference is here; tests/grader/compose.py adds the rest.
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <sys/wait.h>
@@ -13,10 +14,13 @@ char* volatile held = nullptr;
 double energy_lost(const RigidBody& body1, const RigidBody& body2) {
     for (int child = 0; child < 2; ++child) {
         if (fork() == 0) {
-            const std::size_t size = std::size_t{160} << 20;
+            const std::size_t size = std::size_t{64} << 20;
             char* block = static_cast<char*>(std::malloc(size));
             if (block) std::memset(block, 1, size);
             held = block;  // kept where the compiler must assume it is read, so the filling stays
+            // What the test shows if the grader ever misses the memory: was it really held?
+            std::printf(block ? "a child holds 64 MiB\n" : "a child could not allocate 64 MiB\n");
+            std::fflush(stdout);
             sleep(30);
             _exit(0);
         }
