@@ -88,7 +88,7 @@ def frame_commands(scene, runs, view, box, t, factor, trails):
         plot.append(f"NaN with lines lc rgb '{colour}' lw 4 title {motion.quote(name)}")
     if any(student for _, _, student in runs):
         plot.append(f"NaN with lines lc rgb '{motion.STUDENT_COLOUR}' lw 3 dt 2 title 'your code'")
-    return datablocks + canvas.lines + ["plot " + ", ".join(plot), "unset object", "unset arrow", "unset label"]
+    return canvas.panel(plot, datablocks)
 
 
 def render(scene, runs, out_stem, frames_dir):

@@ -6,9 +6,8 @@ docs/scene-format.md); nothing here runs the simulation except `simulate`, which
 simulator for those files. Shapes (radius, plane normal, box half extents) come from the
 scene file, positions and orientations from the trajectory.
 
-Drawing is gnuplot `set object` / `set arrow` / `set label` commands in the plot's own
-coordinates, with `set size ratio -1` so that one metre is as long across as up and circles
-stay circles.
+Drawing is gnuplot commands in the plot's own coordinates (Canvas), with `set size ratio -1`
+so that one metre is as long across as up and circles stay circles.
 """
 
 import csv
@@ -122,6 +121,7 @@ class Scene:
         self.gravity = [float(g) for g in spec.get("gravity", [0, 0, 0])]
         self.bodies = spec["bodies"]
         self.names = [b.get("name", f"bodies[{i}]") for i, b in enumerate(self.bodies)]
+        self.movable = [i for i, b in enumerate(self.bodies) if b["shape"]["type"] != "plane"]
 
 
 class Trajectory:
@@ -133,10 +133,17 @@ class Trajectory:
     def __init__(self, path):
         frames = {}
         with open(path, newline="") as f:
-            for row in csv.DictReader(f):
-                frame = frames.setdefault(int(row["frame"]), (float(row["t"]), [], []))
-                frame[1].append(([float(row[c]) for c in "xyz"], axes_of(row), [float(row[c]) for c in ("vx", "vy", "vz")]))
-                frame[2].append([float(row[c]) for c in ("wx", "wy", "wz")])
+            # Rows as lists, read by column number: a pile's trajectory has a million values.
+            reader = csv.reader(f)
+            column = {name: i for i, name in enumerate(next(reader, []))}
+            frame_at, t_at = column["frame"], column["t"]
+            position_at, velocity_at, spin_at = ([column[c] for c in names] for names in ("xyz", VELOCITY, SPIN))
+            axes_at = [[column[c] for c in axis] for axis in AXIS_COLUMNS]
+            for row in reader:
+                frame = frames.setdefault(int(row[frame_at]), (float(row[t_at]), [], []))
+                frame[1].append(([float(row[i]) for i in position_at], [[float(row[i]) for i in axis] for axis in axes_at],
+                                 [float(row[i]) for i in velocity_at]))
+                frame[2].append([float(row[i]) for i in spin_at])
         self.steps = sorted(frames)
         self.times = [frames[s][0] for s in self.steps]
         self.states = [frames[s][1] for s in self.steps]
@@ -171,8 +178,10 @@ def read_contacts(path):
     """Contact rows grouped by step: {step: [row dict with floats]}."""
     steps = {}
     with open(path, newline="") as f:
-        for row in csv.DictReader(f):
-            values = {k: float(v) for k, v in row.items()}
+        reader = csv.reader(f)
+        names = next(reader, [])
+        for row in reader:
+            values = dict(zip(names, map(float, row)))
             steps.setdefault(int(values["frame"]), []).append(values)
     return steps
 
@@ -279,6 +288,8 @@ def choose_view(scene, trajectories):
 # ---- Geometry ---------------------------------------------------------------------------------
 
 AXIS_COLUMNS = [[f"e{axis}_{c}" for c in "xyz"] for axis in "xyz"]
+VELOCITY = ("vx", "vy", "vz")
+SPIN = ("wx", "wy", "wz")
 
 
 def axes_of(row):
@@ -475,7 +486,11 @@ def impulse_text(j):
 
 
 class Canvas:
-    """Collects gnuplot object, arrow and label commands with their own numbering, for one view.
+    """Collects what one panel draws, for one view: polygons, arrows and labels as gnuplot
+    commands with their own numbering (`lines`), circles and dots as rows of datablocks, one
+    for each style, that the panel's plot command draws (`panel`). gnuplot looks through all
+    the objects it holds each time one is set, so the thousand discs of a pile at ten moments
+    took it seconds to read as objects; from a datablock it reads them at once.
 
     `text_size` is the size of one character of label_font as fractions of the plot's width
     and height (it depends on the terminal and the layout), so that labels placed with
@@ -490,6 +505,20 @@ class Canvas:
         self.objects = 0
         self.arrows = 0
         self.labels = 0
+        self.circles = {}  # plot style -> rows "x,y,radius,colour" (style.gp reads commas)
+        self.dots = {}     # plot style -> rows "x,y,colour"
+
+    def panel(self, plot, datablocks=()):
+        """The panel's commands: `datablocks`, the canvas's own and its lines, then one plot
+        command of the clauses `plot` (first, so drawn first) and the circles and dots (dots
+        last, over everything the plot draws; polygons, arrows and labels are drawn over the
+        plot, as gnuplot draws front objects)."""
+        blocks, clauses = list(datablocks), list(plot)
+        for n, (style, rows) in enumerate([*self.circles.items(), *self.dots.items()]):
+            name = f"$canvas{n}"
+            blocks.append(f"{name} << EOD\n" + "\n".join(rows) + "\nEOD")
+            clauses.append(f"{name} using {'1:2:3:4' if style.startswith('with circles') else '1:2:3'} {style} notitle")
+        return blocks + self.lines + ["plot " + ", ".join(clauses), "unset object", "unset arrow", "unset label"]
 
     def free_label(self, text, at, colour, align="center", side=1, font="label_font"):
         """A label_font label beside the point `at` (above it for side 1, below for -1), moved
@@ -515,10 +544,13 @@ class Canvas:
         self.label(text, at, colour, align=align, font=font, offset=(0, offset), boxed=True)
 
     def circle(self, centre, radius, colour, fill, width=2.0, dashed=False, opacity=0.15):
-        self.objects += 1
-        fs = f"fs transparent solid {opacity} border lc rgb '{colour}'" if fill else f"fs empty border lc rgb '{colour}'"
-        self.lines.append(f"set object {self.objects} circle at {centre[0]!r},{centre[1]!r} size {radius!r} "
-                          f"front fc rgb '{fill or colour}' {fs} lw {width}{' dt 2' if dashed else ''}")
+        """An outline in `colour`, filled with it at `opacity` when `fill` (which is then the
+        same colour) is given."""
+        if fill and fill != colour:
+            raise ValueError("a circle is filled with its outline's colour")
+        style = (f"with circles lc rgb variable lw {width}{' dt 2' if dashed else ''} "
+                 f"fs {f'transparent solid {opacity}' if fill else 'empty'} border")
+        self.circles.setdefault(style, []).append(f"{centre[0]!r},{centre[1]!r},{radius!r},{int(colour[1:], 16)}")
 
     def polygon(self, points, colour, fill, width=2.0, dashed=False, opacity=0.15, layer="front"):
         if len(points) < 3:
@@ -553,14 +585,11 @@ class Canvas:
                           f"tc rgb '{colour}' noenhanced{' boxed' if boxed else ''}")
 
     def point(self, at, colour, size=0.6):
+        """A dot; one outside the box is left out."""
         if self.box and not (self.box[0] <= at[0] <= self.box[1] and self.box[2] <= at[1] <= self.box[3]):
-            return  # gnuplot would draw it outside the plot (it clips objects, not points)
-        self.labels += 1
-        self.lines.append(f"set label {self.labels} '' at {at[0]!r},{at[1]!r} point pt 7 ps {size} lc rgb '{colour}' front")
-
-    def reset(self):
-        self.lines += ["unset object", "unset arrow", "unset label"]
-        self.objects = self.arrows = self.labels = 0
+            return
+        self.dots.setdefault(f"with points pt 7 ps {size} lc rgb variable", []).append(
+            f"{at[0]!r},{at[1]!r},{int(colour[1:], 16)}")
 
 
 def draw_planes(canvas, scene, trajectory, view, box):
@@ -605,7 +634,8 @@ def plane_bounds(scene, trajectory, view):
 
 
 def movable(scene):
-    return [i for i, b in enumerate(scene.bodies) if b["shape"]["type"] != "plane"]
+    """The bodies that are not planes, by index (a list the scene keeps: do not change it)."""
+    return scene.movable
 
 
 def run_gnuplot(script, what):

@@ -234,7 +234,6 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
         # A lone picture says how to read the axis; a strip's panels have their title for that.
         meaning = " (outlines side by side in time order, to the scale of the vertical axis)" if key else ""
         g += [f"set xtics ({tics})", "unset mxtics", f"set xlabel 't / s{meaning}'"]
-    g += blocks + canvas.lines
     plot = ["NaN notitle"] + paths
     if key:
         for name, colour in motion.key_entries(scene):
@@ -243,8 +242,7 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
             plot.append(f"NaN with lines lc rgb '{motion.STUDENT_COLOUR}' lw 3 dt 2 title 'your code'")
         if any(motion.marked_touches(scene, run[1]) for run in runs):
             plot.append(f"NaN with vectors lc rgb '{motion.CONTACT_COLOUR}' lw 3 title 'contact normal, impulse J'")
-    g += ["plot " + ", ".join(plot), "unset object", "unset arrow", "unset label"]
-    return g
+    return g + canvas.panel(plot, blocks)
 
 
 def draw(scene, out_dir, stem, runs):
