@@ -60,20 +60,40 @@ def speed_text(factor):
     return "real time" if factor == 1 else f"slow motion ×{factor}"
 
 
+def trail_blocks(scene, runs, view):
+    """The paths of the bodies' centres, as gnuplot datablocks: for each run and each colour of
+    its trails, a block of rows (x, y) for each body of that colour, one row for each frame of
+    the trajectory, the blocks apart by a blank line. Each frame draws them up to its own row
+    (`every`), so the film's script holds each path once, not once a frame (a pile of 1,000
+    discs had a script of hundreds of MB). One colour a datablock, not a colour column: a
+    dashed line keeps its dashes only when drawn as one line.
+    Returns (datablocks, [(name, run, colour)])."""
+    blocks, trails = [], []
+    for n, (trajectory, _, student) in enumerate(runs):
+        by_colour = {}
+        for i in motion.movable(scene):
+            colour = motion.faded(motion.STUDENT_COLOUR if student else motion.body_colour(scene, i), 0.45)
+            by_colour.setdefault(colour, []).append("\n".join(
+                f"{x!r},{y!r}" for x, y in (view.project(states[i][0]) for states in trajectory.states)))
+        for k, (colour, paths) in enumerate(by_colour.items()):
+            name = f"$trail{n}_{k}"
+            blocks.append(f"{name} << EOD\n" + "\n\n".join(paths) + "\nEOD")
+            trails.append((name, n, colour))
+    return blocks, trails
+
+
 def frame_commands(scene, runs, view, box, t, factor, trails):
-    """One frame: planes, each body's path so far, the bodies at time t, the touches so far."""
+    """One frame: planes, each body's path so far (`trails` of trail_blocks), the bodies at
+    time t, the touches so far."""
     canvas = motion.Canvas(view, box, TEXT_SIZE)
     motion.draw_planes(canvas, scene, runs[0][0], view, box)
-    datablocks, plot = [], ["NaN notitle"]
+    plot = ["NaN notitle"]
     for n, (trajectory, contacts, student) in enumerate(runs):
         index = trajectory.index_at(t)
+        plot += [f"{name} every ::0::{index} using 1:2 with lines lc rgb '{colour}' lw 1.5{' dt 2' if student else ''} "
+                 "notitle" for name, run, colour in trails if run == n]
         for i in motion.movable(scene):
             colour = motion.STUDENT_COLOUR if student else motion.body_colour(scene, i)
-            path = trails[n][i][:index + 1]
-            name = f"$trail{n}_{i}"
-            datablocks.append(f"{name} << EOD\n" + "\n".join(f"{x!r},{y!r}" for x, y in path) + "\nEOD")
-            plot.append(f"{name} using 1:2 with lines lc rgb '{motion.faded(colour, 0.45)}' lw 1.5"
-                        f"{' dt 2' if student else ''} notitle")
             position, axes, _ = trajectory.states[index][i]
             shape = motion.outline(scene.bodies[i], position, axes, view)
             canvas.shape(shape, colour, None if student else colour, width=3.5 if student else 2.5, dashed=student,
@@ -88,7 +108,7 @@ def frame_commands(scene, runs, view, box, t, factor, trails):
         plot.append(f"NaN with lines lc rgb '{colour}' lw 4 title {motion.quote(name)}")
     if any(student for _, _, student in runs):
         plot.append(f"NaN with lines lc rgb '{motion.STUDENT_COLOUR}' lw 3 dt 2 title 'your code'")
-    return canvas.panel(plot, datablocks)
+    return canvas.panel(plot)
 
 
 def render(scene, runs, out_stem, frames_dir):
@@ -96,14 +116,14 @@ def render(scene, runs, out_stem, frames_dir):
     box = strobe.picture_box(scene, [(r[0], r[1]) for r in runs], view, aspect=ASPECT, count=41)
     factor = slow_motion_factor(scene.duration)
     times = frame_times(scene.duration, factor)
-    trails = [[[view.project(states[i][0]) if i < len(states) else None for states in trajectory.states]
-               for i in range(len(scene.bodies))] for trajectory, _, _ in runs]
     script = ["reset", f"load {motion.quote(str(motion.STYLE))}", "eval use_video", "set size ratio -1",
               "set style textbox opaque noborder margins 1, 0.5",
               f"set xrange [{box[0]!r}:{box[1]!r}]", f"set yrange [{box[2]!r}:{box[3]!r}]",
               f"set xlabel {motion.quote(view.xlabel)}", f"set ylabel {motion.quote(view.ylabel)}",
               f"set title {motion.quote(wrapped(strobe.strobe_title(scene)))} font title_font noenhanced",
               "set format x '%g'", "set format y '%g'", "set key outside bottom center horizontal"]
+    blocks, trails = trail_blocks(scene, runs, view)
+    script += blocks
     for k, t in enumerate(times):
         script.append(f"set output {motion.quote(str(frames_dir / f'frame{k:05d}.png'))}")
         script += frame_commands(scene, runs, view, box, t, factor, trails)
