@@ -355,7 +355,7 @@ def update_site_copies(folders, html=SITE_HTML):
     return updated
 
 
-@command("animations", "Lecturers", "MP4 and GIF of every scene, for slides (slow: a few minutes)",
+@command("animations", "Lecturers", "MP4 and GIF of every scene, for slides (slow: about 10 minutes)",
          "Films every scene of CHAPTER (or of every chapter) as <scene>.mp4 (1280x720, 25 fps) and <scene>.gif "
          "(640x360) into build/dev/book/figures/<chapter>/, slowed down by a stated factor when the scene is short.")
 def run_animations(args, raw):
