@@ -18,6 +18,7 @@ The CSV files drawn from stay beside them: <scene>.<responder>.csv, .trajectory.
 
 import argparse
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -76,6 +77,39 @@ def leaving(scene, trajectory, view, box):
     return notes
 
 
+# One character of note_font (the labels of a strip's touches) on the strip's PNG terminal, in
+# pixels: DejaVu Sans at 18 pt, measured over labels such as "J = 3.551 N s at t = 0.4525 s".
+# The SVG and PDF strips hold the same text at the same or a smaller share of their width.
+NOTE_CHAR_PX = 12.0
+
+
+def panel_geometry(rows, columns, title, panel, box):
+    """(width, height, line) of a strip panel's data box on the PNG terminal, in pixels, line
+    being gnuplot's character height (the unit a label is moved by). gnuplot decides the
+    margins of a multiplot's panels, and with `set size ratio -1` the box is as wide as its
+    panel's height allows, not as its column is, so the panel is drawn empty once and gnuplot
+    asked (its GPVAL_TERM_ values)."""
+    settings = [c for c in panel if c.startswith(("set size", "set xlabel", "set ylabel", "set title", "set format",
+                                                   "set xtics", "set ytics", "unset mxtics"))]
+    script = [f"load {motion.quote(str(motion.STYLE))}", "eval use_strip_png", "set output '/dev/null'",
+              f"set multiplot layout {rows},{columns} title {motion.quote(title)} font title_font noenhanced",
+              "set key off", f"set xrange [{box[0]!r}:{box[1]!r}]", f"set yrange [{box[2]!r}:{box[3]!r}]",
+              *settings, "plot NaN notitle", "set print '-'",
+              "print GPVAL_TERM_XMIN, GPVAL_TERM_XMAX, GPVAL_TERM_YMIN, GPVAL_TERM_YMAX, "
+              "GPVAL_TERM_VCHAR / GPVAL_TERM_SCALE", "unset multiplot"]
+    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
+    if result.returncode != 0 or result.stderr.strip():
+        raise RuntimeError(f"gnuplot on a strip panel's size:\n{result.stderr.strip()[:2000]}")
+    xmin, xmax, ymin, ymax, line = map(float, result.stdout.split())
+    return xmax - xmin, ymax - ymin, line
+
+
+def nice_step(least):
+    """The smallest step of 1, 2, 2.5, 4 or 5 times a power of ten that is at least `least`."""
+    power = 10.0 ** math.floor(math.log10(least))
+    return next(m * power for m in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0) if m * power >= least * (1 - 1e-12))
+
+
 def strip_commands(scene, runs):
     trajectories = [(t, c) for t, c, _ in runs.values()]
     view = motion.choose_view(scene, [t for t, _ in trajectories])
@@ -102,12 +136,17 @@ def strip_commands(scene, runs):
     title = f"{scene.title} under each responder\n{strobe.strobe_note(scene, view, count, pitch is not None)}"
     g = [f"set multiplot layout {rows},{columns} "
          f"title {motion.quote(title)} font title_font noenhanced", "set key off"]
-    # One character of label_font in a panel: the strobe picture's, as many times larger as the
-    # panel is narrower and shorter than that picture.
-    text_size = (strobe.TEXT_SIZE[0] * columns * 0.9, strobe.TEXT_SIZE[1] * rows * 0.9)
+    # One character of the labels in a panel, as fractions of its data box, and tics on the
+    # vertical axis no closer than one and a half lines of their text.
+    first, (trajectory, contacts, _) = next(iter(runs.items()))
+    sketch = strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, first, key=False, note=False,
+                                    snapshots=count, pitch=pitch)
+    width, height, line = panel_geometry(rows, columns, title, sketch, box)
+    text_size = (NOTE_CHAR_PX / width, line / height)
+    ytics = nice_step((box[3] - box[2]) * 1.5 * line / height)
     for name, (trajectory, contacts, _) in runs.items():
         panel = strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, name, key=False, note=False,
-                                       snapshots=count, pitch=pitch, text_size=text_size)
+                                       snapshots=count, pitch=pitch, text_size=text_size, ytics=ytics)
         notes = [f"set label {1000 + k} {motion.quote(text)} at graph 0.62, graph {0.85 - 0.15 * k!r} center front "
                  f"font note_font tc rgb '{motion.CONTACT_COLOUR}' noenhanced boxed"
                  for k, text in enumerate(leaving(scene, trajectory, view, box))]

@@ -199,14 +199,28 @@ def marked_touches(scene, contacts, limit=4):
     return [] if scene.responder in RESTING_RESPONDERS else contact_onsets(contacts, limit)
 
 
+def touching(contact):
+    """Whether a contact row is a touch: the bodies overlap, or the responder gave the point an
+    impulse. A speculative point (a pair still apart, which the contact solver watches in case
+    it closes within the step) that got no impulse is no touch yet: marking it would date the
+    touch a step early with J = 0."""
+    return contact["depth"] >= 0.0 or contact["impulse"] > 0.0
+
+
 def contact_onsets(contacts, limit=4):
-    """The first step of each touch: a pair in contact in this step and not in the one before.
+    """The first step of each touch: a pair touching in this step and not in the one before.
     Resting contact (a ball on the ground touches every step) counts once. Returns the first
-    point's row of up to `limit` touches, in time order."""
+    touching point's row of up to `limit` touches, in time order."""
+    def pairs(step):
+        first = {}
+        for c in contacts.get(step, []):
+            if touching(c):
+                first.setdefault((int(c["body1"]), int(c["body2"])), c)
+        return first
     onsets = []
     for step in sorted(contacts):
-        before = {(int(c["body1"]), int(c["body2"])) for c in contacts.get(step - 1, [])}
-        onsets += [c for c in contacts[step] if int(c["point"]) == 0 and (int(c["body1"]), int(c["body2"])) not in before]
+        before = pairs(step - 1)
+        onsets += [c for pair, c in pairs(step).items() if pair not in before]
     return onsets[:limit]
 
 
@@ -520,6 +534,13 @@ class Canvas:
             clauses.append(f"{name} using {'1:2:3:4' if style.startswith('with circles') else '1:2:3'} {style} notitle")
         return blocks + self.lines + ["plot " + ", ".join(clauses), "unset object", "unset arrow", "unset label"]
 
+    def keep_clear(self, text, at, align="center"):
+        """Marks where a label placed by other means (a plane's name) stands, so that labels
+        placed by free_label stay off it."""
+        width = len(text) * self.text_size[0] * (self.box[1] - self.box[0])
+        x0 = at[0] - {"left": 0.0, "center": 0.5, "right": 1.0}[align] * width
+        self.taken.append((x0, x0 + width, at[1]))
+
     def free_label(self, text, at, colour, align="center", side=1, font="label_font"):
         """A label_font label beside the point `at` (above it for side 1, below for -1), moved
         a line further out for as long as it would cover a label placed before it."""
@@ -617,8 +638,10 @@ def draw_planes(canvas, scene, trajectory, view, box):
             cx = sum(p[0] for p in inside) / len(inside)
             cy = sum(p[1] for p in inside) / len(inside)
             # The name runs along the surface, inside the band.
-            canvas.label(scene.names[i], (cx, cy), GROUND_LINE, align="center", font="note_font",
-                         rotate=math.degrees(math.atan2(dy, dx)) if abs(dx) < 0.5 else 0)
+            turn = math.degrees(math.atan2(dy, dx)) if abs(dx) < 0.5 else 0
+            canvas.label(scene.names[i], (cx, cy), GROUND_LINE, align="center", font="note_font", rotate=turn)
+            if not turn:
+                canvas.keep_clear(scene.names[i], (cx, cy))
 
 
 def plane_bounds(scene, trajectory, view):

@@ -162,10 +162,11 @@ def draw_paths(scene, trajectory, view, pitch, count, student=False, name="path"
 
 
 def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, label_side=1, pitch=None,
-                  count=SNAPSHOTS, between=None, font="label_font"):
+                  count=SNAPSHOTS, between=None, font="label_font", with_time=True):
     """At each touch's first step: the contact point, the normal as an arrow (from body 2
-    towards body 1, into body 1), and J and t beside it, clear of the other labels. With
-    `between` = (t0, t1), only the touches that began in that time (a film's frame)."""
+    towards body 1, into body 1), and J and t beside it (J alone without `with_time`), clear
+    of the other labels. With `between` = (t0, t1), only the touches that began in that time
+    (a film's frame)."""
     for c in motion.marked_touches(scene, contacts):
         if between and not between[0] <= c["t"] <= between[1]:
             continue
@@ -182,8 +183,8 @@ def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, la
         middle = ((point[0] + end[0]) / 2, max(point[1], end[1]) if label_side > 0 else min(point[1], end[1]))
         where_x = (middle[0] - box[0]) / (box[1] - box[0])
         align = "left" if where_x < 0.3 else "right" if where_x > 0.7 else "center"
-        canvas.free_label(f"{motion.impulse_text(c['impulse'])} at t = {c['t']:.4g} s", middle, colour, align, label_side,
-                          font)
+        text = motion.impulse_text(c["impulse"]) + (f" at t = {c['t']:.4g} s" if with_time else "")
+        canvas.free_label(text, middle, colour, align, label_side, font)
 
 
 def strobe_note(scene, view, snapshots=SNAPSHOTS, spread=False):
@@ -201,8 +202,11 @@ def strobe_title(scene):
 
 
 def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS, note=True, pitch=None,
-                    text_size=TEXT_SIZE):
-    """gnuplot commands for one strobe panel. runs: [(trajectory, contacts, is_student)]."""
+                    text_size=TEXT_SIZE, ytics=None):
+    """gnuplot commands for one strobe panel. runs: [(trajectory, contacts, is_student)].
+    `ytics`: the step between the vertical axis's tics (gnuplot's choice without it). A panel
+    of a strip (not `key`) whose outlines are set side by side in time labels its touches
+    with J alone, since its horizontal axis tells the time."""
     canvas = motion.Canvas(view, box, text_size)
     motion.draw_planes(canvas, scene, runs[0][0], view, box)
     blocks, paths = [], []
@@ -214,7 +218,7 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
     for n, (trajectory, contacts, student) in enumerate(runs):
         draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
                       label_side=-1 if n else 1, pitch=pitch, count=snapshots,
-                      font="label_font" if key else "note_font")
+                      font="label_font" if key else "note_font", with_time=key or pitch is None)
     if note:
         canvas.label(strobe_note(scene, view, snapshots, pitch is not None), (0.01, 0.965), "#404040",
                      font="note_font", coords="graph")
@@ -222,6 +226,8 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
          f"set yrange [{box[2]!r}:{box[3]!r}]", f"set xlabel {motion.quote(view.xlabel)}", f"set ylabel {motion.quote(view.ylabel)}",
          f"set title {motion.quote(title)} font {'title_font' if key else 'label_font'} noenhanced",
          "set format x '%g'", "set format y '%g'"]
+    if ytics:
+        g += [f"set ytics {ytics!r}"]
     if pitch is not None:
         # The horizontal axis counts time: a tic under each outline, at its body's centre.
         centre = view.project(runs[0][0].states[0][motion.movable(scene)[0]][0])[0]

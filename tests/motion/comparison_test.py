@@ -7,6 +7,11 @@ chapters exist, and the runs obey the laws every responder must.
 - Two carts meeting: momentum (2 kg * 3 m/s - 1 kg * 1 m/s = 5 kg m/s) is kept to rounding
   under every responder; with `none` the energy stays 9.5 J; with `inelastic` it ends at
   1/2 * 3 kg * (5/3 m/s)^2 = 4.1667 J.
+- The strip marks each touch where it begins, with the impulse the responder gave it: the
+  carts' one touch under every responder that answers it with restitution carries
+  J = mu (1 + e) |v1 - v2| = 2/3 kg * 1.6 * 4 m/s = 4.2667 N s, the contact solver's too,
+  whose first row of the pair is a point still apart that gets no impulse (a speculative
+  point); and no marked touch of a responder that changes velocities has J = 0.
 
     comparison_test.py --sim build/dev/tools/workbook-sim --source .
 """
@@ -52,6 +57,19 @@ def main():
                 if abs(px - 5.0) > 1e-12 * 5.0:
                     check(False, f"carts under {name}: momentum {px!r}, expected 5 kg m/s")
                     break
+        for scene in ("ball-drop", "carts-meet"):
+            for name in listed:
+                touches = motion.contact_onsets(motion.read_contacts(out / f"{scene}.{name}.trajectory.contacts.csv"))
+                check(bool(touches), f"{scene} under {name}: no touch marked")
+                if name not in ("none", "projection"):  # the two that change no velocity
+                    check(all(c["impulse"] > 0.0 for c in touches),
+                          f"{scene} under {name}: a touch marked with J = 0: {[(c['t'], c['impulse']) for c in touches]}")
+        expected = 2.0 / 3.0 * 1.6 * 4.0
+        for name in set(listed) - {"none", "projection", "inelastic"}:
+            touches = motion.contact_onsets(motion.read_contacts(out / f"carts-meet.{name}.trajectory.contacts.csv"))
+            check(len(touches) == 1 and abs(touches[0]["impulse"] - expected) <= 1e-12 * expected,
+                  f"carts under {name}: touches marked {[(c['t'], c['impulse']) for c in touches]}, "
+                  f"expected one with J = {expected:.5g} N s")
         none = motion.read_series(out / "carts-meet.none.csv")["total"]
         check(all(abs(e - 9.5) <= 1e-12 * 9.5 for e in none), "carts under none: energy is not 9.5 J throughout")
         inelastic = motion.read_series(out / "carts-meet.inelastic.csv")["total"][-1]
