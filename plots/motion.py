@@ -591,10 +591,13 @@ class Canvas:
             if math.dist(start, end) > 0:
                 self.arrow(start, end, colour, width=0.75 * width, head=False)
 
-    def arrow(self, start, end, colour, width=3.0, head=True):
+    def arrow(self, start, end, colour, width=3.0, head=True, dashed=False):
+        """An arrow; a dashed one has an open head, so that one drawn over a solid arrow (the
+        student's normal over the reference's, at the same touch) leaves the other in sight."""
         self.arrows += 1
+        tip = ("empty head size screen 0.015,25" if dashed else "filled head size screen 0.012,25") if head else "nohead"
         self.lines.append(f"set arrow {self.arrows} from {start[0]!r},{start[1]!r} to {end[0]!r},{end[1]!r} front "
-                          f"lc rgb '{colour}' lw {width} {'filled head size screen 0.012,25' if head else 'nohead'}")
+                          f"lc rgb '{colour}' lw {width}{' dt 2' if dashed else ''} {tip}")
 
     def label(self, text, at, colour="#202020", align="left", font="label_font", coords="first", offset=None,
               rotate=0, boxed=False):

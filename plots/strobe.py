@@ -177,7 +177,8 @@ def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, la
         size = (normal[0] ** 2 + normal[1] ** 2) ** 0.5 or 1.0
         end = (point[0] + length * normal[0] / size, point[1] + length * normal[1] / size)
         canvas.point(point, colour, size=1.0)
-        canvas.arrow(point, end, colour, width=3.0)
+        student = colour == motion.STUDENT_COLOUR  # dashed, as the student's outlines and paths are
+        canvas.arrow(point, end, colour, width=2.0 if student else 3.0, dashed=student)
         # Above the arrow (below for a student's, so the two do not meet); near an edge of the
         # picture the text runs inwards from there.
         middle = ((point[0] + end[0]) / 2, max(point[1], end[1]) if label_side > 0 else min(point[1], end[1]))
