@@ -122,9 +122,14 @@
         var colour = run.student ? "#CC79A7" : "#B2182B", group = el("g", {visibility: "hidden"}, svg);
         var x1 = sx(c.from[0]), y1 = sy(c.from[1]), x2 = sx(c.to[0]), y2 = sy(c.to[1]);
         var a = Math.atan2(y2 - y1, x2 - x1), h = 14;
-        el("line", {x1: x1, y1: y1, x2: x2, y2: y2, stroke: colour, "stroke-width": 4}, group);
+        // The student's arrow is dashed with an open head, narrower: over the reference's at the
+        // same touch it leaves that one in sight.
+        var shaft = {x1: x1, y1: y1, x2: x2, y2: y2, stroke: colour, "stroke-width": run.student ? 2.5 : 4};
+        if (run.student) shaft["stroke-dasharray"] = "6 4";
+        el("line", shaft, group);
         el("polygon", {points: [x2 + h * Math.cos(a), y2 + h * Math.sin(a), x2 + h * Math.cos(a + 2.4), y2 + h * Math.sin(a + 2.4),
-                                x2 + h * Math.cos(a - 2.4), y2 + h * Math.sin(a - 2.4)].join(" "), fill: colour}, group);
+                                x2 + h * Math.cos(a - 2.4), y2 + h * Math.sin(a - 2.4)].join(" "),
+                       fill: run.student ? "none" : colour, stroke: run.student ? colour : "none", "stroke-width": 2.5}, group);
         var text = el("text", {x: 12, y: 0, "font-size": 20, fill: colour, "paint-order": "stroke", stroke: "#fff",
                                "stroke-width": 5, visibility: "hidden", "class": "wb-touch"}, svg,
                       (run.student ? "your code: " : "") + c.text + " at t = " + label(c.t) + " s");
