@@ -23,6 +23,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+from plots import figure_render
 from plots import motion
 from plots import strobe
 
@@ -83,27 +84,6 @@ def leaving(scene, trajectory, view, box):
 NOTE_CHAR_PX = 12.0
 
 
-def panel_geometry(rows, columns, title, panel, box):
-    """(width, height, line) of a strip panel's data box on the PNG terminal, in pixels, line
-    being gnuplot's character height (the unit a label is moved by). gnuplot decides the
-    margins of a multiplot's panels, and with `set size ratio -1` the box is as wide as its
-    panel's height allows, not as its column is, so the panel is drawn empty once and gnuplot
-    asked (its GPVAL_TERM_ values)."""
-    settings = [c for c in panel if c.startswith(("set size", "set xlabel", "set ylabel", "set title", "set format",
-                                                   "set xtics", "set ytics", "unset mxtics"))]
-    script = [f"load {motion.quote(str(motion.STYLE))}", "eval use_strip_png", "set output '/dev/null'",
-              f"set multiplot layout {rows},{columns} title {motion.quote(title)} font title_font noenhanced",
-              "set key off", f"set xrange [{box[0]!r}:{box[1]!r}]", f"set yrange [{box[2]!r}:{box[3]!r}]",
-              *settings, "plot NaN notitle", "set print '-'",
-              "print GPVAL_TERM_XMIN, GPVAL_TERM_XMAX, GPVAL_TERM_YMIN, GPVAL_TERM_YMAX, "
-              "GPVAL_TERM_VCHAR / GPVAL_TERM_SCALE", "unset multiplot"]
-    result = subprocess.run(["gnuplot"], input="\n".join(script) + "\n", capture_output=True, text=True)
-    if result.returncode != 0 or result.stderr.strip():
-        raise RuntimeError(f"gnuplot on a strip panel's size:\n{result.stderr.strip()[:2000]}")
-    xmin, xmax, ymin, ymax, line = map(float, result.stdout.split())
-    return xmax - xmin, ymax - ymin, line
-
-
 def nice_step(least):
     """The smallest step of 1, 2, 2.5, 4 or 5 times a power of ten that is at least `least`."""
     power = 10.0 ** math.floor(math.log10(least))
@@ -141,7 +121,9 @@ def strip_commands(scene, runs):
     first, (trajectory, contacts, _) = next(iter(runs.items()))
     sketch = strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, first, key=False, note=False,
                                     snapshots=count, pitch=pitch)
-    width, height, line = panel_geometry(rows, columns, title, sketch, box)
+    # gnuplot decides a multiplot panel's margins, and with `set size ratio -1` its box is as
+    # wide as the panel's height allows, not as its column is: so it is asked.
+    width, height, line = figure_render.panel_area(g + sketch, "use_strip_png")
     text_size = (NOTE_CHAR_PX / width, line / height)
     ytics = nice_step((box[3] - box[2]) * 1.5 * line / height)
     for name, (trajectory, contacts, _) in runs.items():

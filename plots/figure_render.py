@@ -20,6 +20,28 @@ RECORD_PANEL = ('print sprintf("%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g 
                 'GPVAL_TERM_YSIZE, GPVAL_TERM_SCALE)')
 
 
+def panel_area(commands, terminal):
+    """(width, height, line) of the plot area of the first panel `commands` draw on `terminal`
+    (a use_* string of style.gp), in pixels, line being gnuplot's character height there (the
+    unit a label's offset counts in): what gnuplot decided, margins and `set size ratio`
+    included, asked of it by drawing the panel once into a scratch file."""
+    with tempfile.TemporaryDirectory() as scratch:
+        script = [f"load {quote(str(STYLE))}", f"eval {terminal}", f"set output {quote(str(Path(scratch, 'sketch')))}",
+                  f"set print {quote(str(Path(scratch, 'panels')))}"]
+        for command in commands:
+            script.append(command)
+            if command.startswith("plot "):
+                script += [RECORD_PANEL, "print GPVAL_TERM_VCHAR / GPVAL_TERM_SCALE"]
+                break
+        result = subprocess.run(["gnuplot"], input="\n".join(script + ["unset print"]) + "\n", capture_output=True,
+                                text=True)
+        if result.returncode != 0 or result.stderr.strip():
+            raise RuntimeError(f"gnuplot on a panel's size:\n{result.stderr.strip()[:2000]}")
+        record, line = Path(scratch, "panels").read_text().split("\n")[:2]
+    left, right, low, high = (float(v) for v in record.split()[:4])
+    return right - left, high - low, float(line)
+
+
 def quote(text):
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
