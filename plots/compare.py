@@ -90,6 +90,22 @@ def nice_step(least):
     return next(m * power for m in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0) if m * power >= least * (1 - 1e-12))
 
 
+def names(scene, trajectory, view, pitch, count):
+    """Each body's name above its first outline, in its colour: the strip's key, in its first
+    panel, where a scene has bodies of more than one colour (the panels have no key of their own)."""
+    entries = motion.key_entries(scene)
+    if len(entries) < 2 or len(entries) != len(motion.movable(scene)):
+        return []
+    where = strobe.view_at(view, pitch, scene.duration, 0.0, count)
+    labels = []
+    for k, (i, (name, colour)) in enumerate(zip(motion.movable(scene), entries)):
+        x, y = where.project(trajectory.states[0][i][0])
+        top = y + motion.body_size(scene.bodies[i])
+        labels.append(f"set label {2000 + k} {motion.quote(name)} at first {x!r}, first {top!r} center offset character 0, 0.8 "
+                      f"front font note_font tc rgb '{colour}' noenhanced boxed")
+    return labels
+
+
 def strip_commands(scene, runs):
     trajectories = [(t, c) for t, c, _ in runs.values()]
     view = motion.choose_view(scene, [t for t, _ in trajectories])
@@ -126,12 +142,14 @@ def strip_commands(scene, runs):
     width, height, line = figure_render.panel_area(g + sketch, "use_strip_png")
     text_size = (NOTE_CHAR_PX / width, line / height)
     ytics = nice_step((box[3] - box[2]) * 1.5 * line / height)
-    for name, (trajectory, contacts, _) in runs.items():
+    for n, (name, (trajectory, contacts, _)) in enumerate(runs.items()):
         panel = strobe.strobe_commands(scene, [(trajectory, contacts, False)], view, box, name, key=False, note=False,
                                        snapshots=count, pitch=pitch, text_size=text_size, ytics=ytics)
         notes = [f"set label {1000 + k} {motion.quote(text)} at graph 0.62, graph {0.85 - 0.15 * k!r} center front "
                  f"font note_font tc rgb '{motion.CONTACT_COLOUR}' noenhanced boxed"
                  for k, text in enumerate(leaving(scene, trajectory, view, box))]
+        if n == 0:
+            notes += names(scene, trajectory, view, pitch, count)
         g += panel[:-4] + notes + panel[-4:]
     return g + ["unset multiplot"]
 

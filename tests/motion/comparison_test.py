@@ -12,6 +12,7 @@ chapters exist, and the runs obey the laws every responder must.
   J = mu (1 + e) |v1 - v2| = 2/3 kg * 1.6 * 4 m/s = 4.2667 N s, the contact solver's too,
   whose first row of the pair is a point still apart that gets no impulse (a speculative
   point); and no marked touch of a responder that changes velocities has J = 0.
+- The strip names the carts (its panels have no key).
 
     comparison_test.py --sim build/dev/tools/workbook-sim --source .
 """
@@ -64,6 +65,9 @@ def main():
                 if name not in ("none", "projection"):  # the two that change no velocity
                     check(all(c["impulse"] > 0.0 for c in touches),
                           f"{scene} under {name}: a touch marked with J = 0: {[(c['t'], c['impulse']) for c in touches]}")
+        # The strip's panels have no key: its first panel names each cart above its first outline.
+        strip = (out / "carts-meet-strip.svg").read_text()
+        check(all(f">{name}<" in strip for name in ("cart A", "cart B")), "the carts' strip does not name the carts")
         expected = 2.0 / 3.0 * 1.6 * 4.0
         for name in set(listed) - {"none", "projection", "inelastic"}:
             touches = motion.contact_onsets(motion.read_contacts(out / f"carts-meet.{name}.trajectory.contacts.csv"))
