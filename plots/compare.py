@@ -28,7 +28,9 @@ from plots import motion
 from plots import strobe
 
 SCENES = sorted((motion.PLOTS / "comparison").glob("*.json"))
-RESPONDER_COLOURS = ["#303030", "#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9"]
+# One colour a responder (Okabe-Ito, style.gp's, with its darker yellow): eight, as many as
+# there are responders; past them the colours come round again with dashes.
+RESPONDER_COLOURS = ["#303030", "#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9", "#B8A000"]
 
 
 def responders(simulator):
@@ -58,10 +60,15 @@ def energy_commands(scene, runs):
     g = [f"set title {motion.quote(scene.title + ': total energy under each responder')} font title_font noenhanced",
          "set xlabel 't / s'", "set ylabel 'E / J'", f"set xrange [0:{scene.duration!r}]", "set format x '%g'",
          f"set yrange [{lo - (0.05 * span if lo < 0 else 0)!r}:{hi + 0.1 * span!r}]"]
-    plot = []
+    # Several responders give the same curve (a ball meets the ground at one point, which
+    # chapters 3 to 6 answer alike): each is drawn narrower than the one before, over it, so
+    # that curves which coincide show as bands of their colours instead of the last alone.
+    plot, n_runs = [], len(runs)
     for n, (name, (_, _, series)) in enumerate(runs.items()):
         colour = RESPONDER_COLOURS[n % len(RESPONDER_COLOURS)]
-        plot.append(f"{motion.quote(str(series))} skip 1 using 1:5 with lines lc rgb '{colour}' lw 3 "
+        width = 1.5 + 6.5 * (n_runs - 1 - n) / max(n_runs - 1, 1)
+        dashes = f" dt {1 + n // len(RESPONDER_COLOURS)}" if n >= len(RESPONDER_COLOURS) else ""
+        plot.append(f"{motion.quote(str(series))} skip 1 using 1:5 with lines lc rgb '{colour}' lw {width:.2f}{dashes} "
                     f"title {motion.quote(name)}")
     return g + ["plot " + ", ".join(plot)]
 
