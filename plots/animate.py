@@ -100,8 +100,7 @@ def frame_commands(scene, runs, view, box, t, factor, trails):
                          opacity=0.25, hands=motion.box_hands(scene.bodies[i], position, axes, view))
             canvas.point(view.project(position), colour, size=0.5)
         between = (t - motion.touch_window(scene.duration), t + 1e-12)
-        strobe.draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
-                             label_side=-1 if n else 1, between=between)
+        strobe.draw_contacts(canvas, scene, contacts, box, student, label_side=-1 if n else 1, between=between)
     canvas.label(f"t = {t:.4f} s", (0.01, 0.95), "#202020", coords="graph")
     canvas.label(f"{view.name} · {speed_text(factor)}", (0.99, 0.95), "#202020", align="right", coords="graph")
     for name, colour in motion.key_entries(scene):

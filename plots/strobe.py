@@ -161,12 +161,14 @@ def draw_paths(scene, trajectory, view, pitch, count, student=False, name="path"
     return blocks, clauses
 
 
-def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, label_side=1, pitch=None,
+def draw_contacts(canvas, scene, contacts, box, student=False, label_side=1, pitch=None,
                   count=SNAPSHOTS, between=None, font="label_font", with_time=True):
     """At each touch's first step: the contact point, the normal as an arrow (from body 2
     towards body 1, into body 1), and J and t beside it (J alone without `with_time`), clear
     of the other labels. With `between` = (t0, t1), only the touches that began in that time
-    (a film's frame)."""
+    (a film's frame). The student's touches are in their colour, their arrows dashed as their
+    outlines are, with an open head, so that the reference's arrow at the same touch shows."""
+    colour = motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR
     for c in motion.marked_touches(scene, contacts):
         if between and not between[0] <= c["t"] <= between[1]:
             continue
@@ -177,7 +179,6 @@ def draw_contacts(canvas, scene, contacts, box, colour=motion.CONTACT_COLOUR, la
         size = (normal[0] ** 2 + normal[1] ** 2) ** 0.5 or 1.0
         end = (point[0] + length * normal[0] / size, point[1] + length * normal[1] / size)
         canvas.point(point, colour, size=1.0)
-        student = colour == motion.STUDENT_COLOUR  # dashed, as the student's outlines and paths are
         canvas.arrow(point, end, colour, width=2.0 if student else 3.0, dashed=student)
         # Above the arrow (below for a student's, so the two do not meet); near an edge of the
         # picture the text runs inwards from there.
@@ -217,8 +218,7 @@ def strobe_commands(scene, runs, view, box, title, key=True, snapshots=SNAPSHOTS
         blocks += b
         paths += c
     for n, (trajectory, contacts, student) in enumerate(runs):
-        draw_contacts(canvas, scene, contacts, box, motion.STUDENT_COLOUR if student else motion.CONTACT_COLOUR,
-                      label_side=-1 if n else 1, pitch=pitch, count=snapshots,
+        draw_contacts(canvas, scene, contacts, box, student, label_side=-1 if n else 1, pitch=pitch, count=snapshots,
                       font="label_font" if key else "note_font", with_time=key or pitch is None)
     if note:
         canvas.label(strobe_note(scene, view, snapshots, pitch is not None), (0.01, 0.965), "#404040",
