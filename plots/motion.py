@@ -548,9 +548,12 @@ class Canvas:
         width = len(text) * self.text_size[0] * (box[1] - box[0])
         line = self.text_size[1] * (box[3] - box[2])
         x0 = at[0] - {"left": 0.0, "center": 0.5, "right": 1.0}[align] * width
-        # Inside the picture: a label that would run over its left or right edge starts (ends) there.
-        if x0 < box[0] or x0 + width > box[1]:
-            x0 = box[0] + 0.01 * (box[1] - box[0]) if x0 < box[0] else box[1] - 0.01 * (box[1] - box[0]) - width
+        # Inside the picture: a label that would run over its left or right edge starts (ends)
+        # there, its opaque box too (a character's margin: strobe.py's textbox style), so that
+        # the box does not cover the axis.
+        inset = 0.01 * (box[1] - box[0]) + self.text_size[0] * (box[1] - box[0])
+        if x0 < box[0] + inset or x0 + width > box[1] - inset:
+            x0 = box[0] + inset if x0 < box[0] + inset else box[1] - inset - width
             at, align = (x0, at[1]), "left"
         # Lines out from the point while they stay inside the picture, then the other way.
         slots = [side * (1.0 + 1.3 * n) for n in range(40)]
